@@ -1,0 +1,25 @@
+// Surface albedo rho = baseColorFactor x base-colour texture (sRGB-decoded by the texture
+// format) x COLOR_0, and the alpha-mask cut-out shared by every pass that draws the scene.
+#ifndef GI_MATERIAL_GLSL
+#define GI_MATERIAL_GLSL
+
+layout(binding = BIND_TEX_BASE_COLOR) uniform sampler2D baseColorTexture;
+layout(binding = BIND_TEX_EMISSIVE) uniform sampler2D emissiveTexture;
+
+vec4 materialBaseColor(GpuMaterial m, vec2 uv0, vec2 uv1, vec4 vertexColor) {
+    vec4 color = m.baseColorFactor * vertexColor;
+    if (m.flags.x != 0) color *= texture(baseColorTexture, m.flags.w == 1 ? uv1 : uv0);
+    return color;
+}
+
+vec3 materialEmission(GpuMaterial m, vec2 uv0) {
+    vec3 e = m.emissiveAndCutoff.rgb;
+    if (m.flags.y != 0) e *= texture(emissiveTexture, uv0).rgb;
+    return e;
+}
+
+bool materialCutOut(GpuMaterial m, float alpha) {
+    return m.flags.z == ALPHA_MASK && alpha < m.emissiveAndCutoff.w;
+}
+
+#endif

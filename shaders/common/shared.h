@@ -1,0 +1,129 @@
+// The one place where binding slots and GPU struct layouts are written. Included by C++
+// (through gl/Shared.h, which maps the GLSL types onto glm) and by GLSL, so the two can
+// never disagree. Structs use std140/std430-safe members only: vec4, mat4, ivec4 and
+// scalars, with explicit padding (no vec3: its alignment differs between the two sides).
+#ifndef GI_SHARED_H
+#define GI_SHARED_H
+
+// Uniform buffers.
+#define BIND_UBO_FRAME              0   // FrameUniforms, one per rendered view
+
+#define BIND_UBO_VOXEL              1   // VoxelUniforms: cascade placement and trace parameters
+
+// Shader storage buffers.
+#define BIND_SSBO_LIGHTS            0   // GpuLight[], every light of the scene
+#define BIND_SSBO_MATERIALS         1   // GpuMaterial[], indexed by the draw's material
+#define BIND_SSBO_SHADOWS           2   // GpuShadow[], one per light, same index as GpuLight
+
+// Texture units for samplers.
+#define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
+#define BIND_TEX_EMISSIVE           1   // sRGB8_A8 emissive of the current draw
+#define BIND_TEX_SHADOW_2D          2   // depth 2D array, spot and directional shadow maps
+#define BIND_TEX_SHADOW_CUBE        3   // depth cube-map array, point-light shadow maps
+#define BIND_TEX_PRESENT_SOURCE     2   // RGBA32F linear radiance the viewer presents
+
+#define BIND_TEX_INDIRECT           4   // rgba16f screen-space E_ind (W/m^2), a = view depth (m)
+#define BIND_TEX_VOXEL_ALBEDO       5   // sampler3D rgba16f, rgb = albedo, a = coverage
+#define BIND_TEX_VOXEL_IRRADIANCE   6   // sampler3D rgba16f, rgb = irradiance E (W/m^2)
+#define BIND_TEX_VOXEL_NORMAL       7   // sampler3D rgba16f, xyz = mean normal
+
+// Image units (imageLoad/Store/atomics) of the voxel passes.
+#define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
+#define BIND_IMG_VOXEL_NORMAL       1   // rgba16f, running average of normals, w = unused
+#define BIND_IMG_VOXEL_IRRADIANCE   2   // rgba16f, rgb = sum over lights of E, a = light count
+#define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = current light's running mean E
+#define BIND_IMG_VOXEL_LOCK         4   // r32ui, bit 0 = spinlock, bits 1..31 = fragment count
+
+#define VOXEL_MAX_LEVELS            8
+#define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
+
+// Vertex attribute locations of the scene's vertex buffer.
+#define ATTR_POSITION               0   // vec3, world space, metres
+#define ATTR_NORMAL                 1   // vec3, world space, unit length
+#define ATTR_TEXCOORD0              2   // vec2
+#define ATTR_TEXCOORD1              3   // vec2
+#define ATTR_COLOR                  4   // vec4, linear RGBA (COLOR_0, white when absent)
+
+// Uniform locations set per draw or per view.
+#define LOC_DRAW_MATERIAL           0   // int, index into GpuMaterial[]
+#define LOC_SHADOW_VIEW_PROJECTION  1   // mat4, world -> clip of the shadow view being drawn
+#define LOC_SHADOW_LIGHT_POSITION   2   // vec4, xyz = point light position, w = far distance
+                                        // (0 for spot/directional: hardware depth is used)
+
+#define LIGHT_POINT                 0
+#define LIGHT_SPOT                  1
+#define LIGHT_DIRECTIONAL           2
+
+// Which radiance component a frame writes (--output).
+#define OUTPUT_FINAL                0
+#define OUTPUT_DIRECT               1
+#define OUTPUT_INDIRECT             2
+
+#define SHADOW_NONE                 0
+#define SHADOW_2D                   1
+#define SHADOW_CUBE                 2
+
+#define ALPHA_OPAQUE                0
+#define ALPHA_MASK                  1
+
+#ifdef __cplusplus
+namespace gi::shader {
+#endif
+
+struct FrameUniforms {                  // std140
+    mat4 viewProjection;                // world -> clip
+    mat4 view;                          // world -> camera
+    vec4 cameraPosition;                // xyz = world-space eye (m), w = unused
+    vec4 shading;                       // x = specular strength ks, y = Blinn-Phong exponent,
+                                        // z = 1 to include specular, w = 1 to apply shadows
+    ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
+                                        // write, zw = unused
+};
+
+struct GpuLight {                       // std430
+    vec4 positionAndType;               // xyz = world position (m), w = LIGHT_* as float
+    vec4 directionAndRange;             // xyz = unit direction light travels, w = range (0 = inf)
+    vec4 radiantIntensity;              // rgb = colour x intensity (W/sr, or W/m^2 for
+                                        // directional), w = unused
+    vec4 spotCone;                      // x = cos(inner), y = cos(outer), zw = unused
+};
+
+struct GpuMaterial {                    // std430
+    vec4 baseColorFactor;               // linear RGBA
+    vec4 emissiveAndCutoff;             // rgb = emissive factor (linear), w = alpha cutoff
+    ivec4 flags;                        // x = has base-colour texture, y = has emissive texture,
+                                        // z = ALPHA_* mode, w = base-colour texcoord set (0/1)
+};
+
+struct VoxelUniforms {                  // std140
+    vec4 levelOrigin[VOXEL_MAX_LEVELS]; // xyz = world-space min corner of level k (m),
+                                        // w = voxel edge length of level k (m)
+    ivec4 grid;                         // x = resolution v, y = level count l,
+                                        // z = level being written/read (pass-specific), w = 0
+    vec4 trace;                         // x = cone half-angle tan, y = max distance (m),
+                                        // z = step factor (x cone diameter), w = 1 to apply
+                                        // the thesis' 1/(1+d^2) falloff
+    vec4 traceWeights;                  // x = weight of the central cone, y = weight of each
+                                        // ring cone, z = cos of ring angle, w = sin of it
+    vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
+                                        // fragment is discarded, y = 1 for a light view that
+                                        // writes distance (unused), zw = unused
+    mat4 viewProjection;                // injection: world -> clip of the current light view
+    vec4 lightIndex;                    // injection: x = index into GpuLight[], yzw = unused
+};
+
+struct GpuShadow {                      // std430, one per light
+    mat4 worldToShadow;                 // SHADOW_2D: world -> shadow clip space
+    vec4 params;                        // x = SHADOW_* kind, y = layer in its array,
+                                        // z = far distance (m) for cube maps,
+                                        // w = world-space size of one texel at 1 m distance
+                                        //     (perspective) or everywhere (orthographic)
+    vec4 bias;                          // x = normal offset in texels, y = PCF radius in
+                                        //     texels, z = 1 if orthographic, w = unused
+};
+
+#ifdef __cplusplus
+} // namespace gi::shader
+#endif
+
+#endif

@@ -1,0 +1,18 @@
+// Present pass, fragment stage: linear radiance to the display the way PNG outputs are made
+// (DESIGN.md): exposure 1, clamp to [0, 1], sRGB encode (IEC 61966-2-1). The encode is done
+// here because GL_FRAMEBUFFER_SRGB stays disabled, so the window shows what a PNG holds.
+#include "../common/shared.h"
+
+layout(binding = BIND_TEX_PRESENT_SOURCE) uniform sampler2D source;
+
+in vec2 uv;
+layout(location = 0) out vec4 outColor;
+
+vec3 linearToSrgb(vec3 linear) {
+    vec3 c = clamp(linear, 0.0, 1.0);
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
+}
+
+void main() {
+    outColor = vec4(linearToSrgb(texture(source, uv).rgb), 1.0);
+}

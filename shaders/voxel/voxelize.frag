@@ -1,0 +1,39 @@
+// Voxelization, fragment stage: averages albedo (with coverage 1) and normal of every
+// fragment into the finest level containing it, under the voxel's spinlock (thesis 4.3.3.1).
+#include "voxel_common.glsl"
+
+layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
+    GpuMaterial materials[];
+};
+
+#include "../common/material.glsl"
+#include "voxel_lock.glsl"
+
+layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) coherent uniform image3D voxelAlbedo;
+layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) coherent uniform image3D voxelNormal;
+
+layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
+
+in VoxelVertex {
+    vec3 position;
+    vec3 normal;
+    vec2 texcoord0;
+    vec2 texcoord1;
+    vec4 color;
+} vin;
+
+void main() {
+    GpuMaterial m = materials[drawMaterial];
+    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+    if (materialCutOut(m, baseColor.a)) discard;
+    int level = finestLevel(vin.position);
+    if (level < 0) discard;
+    ivec3 texel = voxelTexel(vin.position, level);
+    vec3 n = normalize(vin.normal);
+    VOXEL_LOCKED_AVERAGE(texel, {
+        vec4 albedo = imageLoad(voxelAlbedo, texel);
+        vec4 normal = imageLoad(voxelNormal, texel);
+        imageStore(voxelAlbedo, texel, keep * albedo + add * vec4(baseColor.rgb, 1.0));
+        imageStore(voxelNormal, texel, keep * normal + add * vec4(n, 0.0));
+    })
+}

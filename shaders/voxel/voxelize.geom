@@ -1,0 +1,43 @@
+// Voxelization, geometry stage (thesis Listing 4.1): project each triangle orthographically
+// along the world axis its face normal is most aligned with, so it covers the most raster
+// samples. The projection spans the coarsest level; the raster is v x voxel.multiplier.
+#include "voxel_common.glsl"
+
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+in VoxelVertex {
+    vec3 position;
+    vec3 normal;
+    vec2 texcoord0;
+    vec2 texcoord1;
+    vec4 color;
+} vin[];
+
+out VoxelVertex {
+    vec3 position;
+    vec3 normal;
+    vec2 texcoord0;
+    vec2 texcoord1;
+    vec4 color;
+} vout;
+
+void main() {
+    vec3 faceNormal = abs(cross(vin[1].position - vin[0].position, vin[2].position - vin[0].position));
+    int coarsest = voxelLevels() - 1;
+    vec3 center = levelOrigin(coarsest) + 0.5 * levelExtent(coarsest);
+    float halfExtent = 0.5 * levelExtent(coarsest);
+    for (int i = 0; i < 3; ++i) {
+        vec3 p = (vin[i].position - center) / halfExtent;   // coarsest level -> [-1, 1]^3
+        vec3 projected = faceNormal.x >= faceNormal.y && faceNormal.x >= faceNormal.z ? p.yzx
+                       : faceNormal.y >= faceNormal.z ? p.zxy : p.xyz;
+        gl_Position = vec4(projected.xy, projected.z * 0.5, 1.0);
+        vout.position = vin[i].position;
+        vout.normal = vin[i].normal;
+        vout.texcoord0 = vin[i].texcoord0;
+        vout.texcoord1 = vin[i].texcoord1;
+        vout.color = vin[i].color;
+        EmitVertex();
+    }
+    EndPrimitive();
+}

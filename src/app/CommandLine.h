@@ -1,0 +1,69 @@
+// The command line of DESIGN.md parsed into one Config. Every flag is validated here
+// (ranges, file extensions, numbers), so commands start only with good input; an error is
+// one line, and main turns it into exit status 2.
+#pragma once
+
+#include "platform/GlContext.h"
+#include "render/FrameRenderer.h"
+#include "render/Settings.h"
+#include "scene/Scene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gi::app {
+
+enum class Command { View, Render, Bench, Info, Help };
+
+// `--camera ex,ey,ez,tx,ty,tz,fovy_deg`
+struct CameraSpec {
+    glm::vec3 eye{0.0f}, target{0.0f, 0.0f, -1.0f};
+    float yfovDegrees = 45.0f;
+};
+
+// `view --keys "FRAME:KEY,..."`: a key press replayed at a frame, for scripted viewer runs.
+struct KeyEvent {
+    int frame = 0;
+    std::string key;   // GLFW-style name: "G", "1", "F12", "SPACE", ...
+};
+
+struct Config {
+    Command command = Command::View;
+    Command helpFor = Command::View;        // Help: which command's help to print
+    std::string scenePath;                   // empty = the default scene (Cornell box)
+    std::string outPath;                     // render: PNG
+    std::string hdrPath;                     // render: .exr or .pfm
+    std::string timingsPath;                 // render: JSON
+    render::GiMode mode = render::GiMode::Direct;
+    render::OutputComponent output = render::OutputComponent::Final;
+    int width = 0, height = 0;               // 0 = the command's default
+    int cameraIndex = 0;
+    std::optional<CameraSpec> cameraSpec;
+    std::vector<scene::Light> extraLights;   // --light
+    platform::HeadlessProvider gl = platform::HeadlessProvider::Egl;
+    bool glExplicit = false;                 // --gl given: no silent fallback
+    Settings settings;
+    // view
+    int frames = 0;                          // 0 = interactive
+    std::string screenshotPath;
+    std::vector<KeyEvent> keys;
+    // bench
+    bool quick = false;
+    std::string outDir;
+};
+
+[[nodiscard]] std::optional<Config> parseCommandLine(int argc, const char* const* argv,
+        std::string& error);
+
+[[nodiscard]] std::string usage(Command command);
+
+// Path of the default scene (assets/cornell_box/cornell_box.gltf in the source tree).
+[[nodiscard]] std::string defaultScenePath();
+
+[[nodiscard]] bool parseLightSpec(const std::string& text, scene::Light& light, std::string& error);
+[[nodiscard]] bool parseCameraSpec(const std::string& text, CameraSpec& camera, std::string& error);
+[[nodiscard]] bool parseKeyEvents(const std::string& text, std::vector<KeyEvent>& keys,
+        std::string& error);
+
+} // namespace gi::app

@@ -1,0 +1,88 @@
+#include "app/InfoCommand.h"
+
+#include "app/SceneSetup.h"
+#include "scene/GpuScene.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <cstdio>
+
+namespace gi::app {
+namespace {
+
+const char* lightTypeName(scene::LightType type) {
+    switch (type) {
+    case scene::LightType::Point: return "point";
+    case scene::LightType::Spot: return "spot";
+    case scene::LightType::Directional: return "directional";
+    }
+    return "?";
+}
+
+double mebibytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+} // namespace
+
+int runInfo(const Config& config) {
+    scene::Scene scene;
+    std::string error;
+    if (!loadScene(config, scene, error)) {
+        std::fprintf(stderr, "voxatlas info: %s\n", error.c_str());
+        return 2;
+    }
+    std::printf("scene      %s\n", scene.sourcePath.c_str());
+    std::printf("triangles  %zu\n", scene.triangleCount());
+    std::printf("vertices   %zu\n", scene.vertexCount());
+    std::printf("primitives %zu (%zu instances)\n", scene.primitives.size(), scene.instances.size());
+    std::printf("materials  %zu\n", scene.materials.size());
+    std::printf("textures   %zu\n", scene.textures.size());
+    if (scene.bounds.empty()) {
+        std::printf("bounds     empty\n");
+    } else {
+        const glm::vec3 size = scene.bounds.size();
+        std::printf("bounds     min (%.4g, %.4g, %.4g) max (%.4g, %.4g, %.4g) size %.4g x %.4g x %.4g m\n",
+                scene.bounds.min.x, scene.bounds.min.y, scene.bounds.min.z, scene.bounds.max.x,
+                scene.bounds.max.y, scene.bounds.max.z, size.x, size.y, size.z);
+    }
+    std::printf("lights     %zu\n", scene.lights.size());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const scene::Light& l = scene.lights[i];
+        std::printf("  [%zu] %-11s %s colour (%.3g, %.3g, %.3g) intensity %.4g", i,
+                lightTypeName(l.type), l.isDefault ? "(default)" : l.name.c_str(), l.color.r,
+                l.color.g, l.color.b, l.intensity);
+        if (l.type != scene::LightType::Directional) {
+            std::printf(" at (%.4g, %.4g, %.4g)", l.position.x, l.position.y, l.position.z);
+        }
+        if (l.type != scene::LightType::Point) {
+            std::printf(" towards (%.3g, %.3g, %.3g)", l.direction.x, l.direction.y, l.direction.z);
+        }
+        if (l.type == scene::LightType::Spot) {
+            std::printf(" cone %.3g-%.3g deg", glm::degrees(l.innerConeAngle), glm::degrees(l.outerConeAngle));
+        }
+        std::printf("\n");
+    }
+    std::printf("cameras    %zu\n", scene.cameras.size());
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
+        const scene::Camera& c = scene.cameras[i];
+        const glm::vec3 eye(c.worldFromCamera[3]);
+        const glm::vec3 forward = -glm::vec3(c.worldFromCamera[2]);
+        std::printf("  [%zu] %s at (%.4g, %.4g, %.4g) looking (%.3g, %.3g, %.3g) yfov %.4g deg\n", i,
+                c.isDefault ? "(default)" : c.name.c_str(), eye.x, eye.y, eye.z, forward.x,
+                forward.y, forward.z, glm::degrees(c.yfov));
+    }
+    std::size_t vertexBytes = scene.vertexCount() * sizeof(scene::SceneVertex);
+    std::size_t indexBytes = scene.triangleCount() * 3 * sizeof(std::uint32_t);
+    std::size_t textureBytes = 0;
+    for (const scene::Texture& t : scene.textures) {
+        // RGBA8 with a full mip chain: 4/3 of the base level.
+        textureBytes += std::size_t(t.width) * std::size_t(t.height) * 4 * 4 / 3;
+    }
+    std::printf("memory plan (GPU)\n");
+    std::printf("  scene/vertices %10.2f MiB\n", mebibytes(vertexBytes));
+    std::printf("  scene/indices  %10.2f MiB\n", mebibytes(indexBytes));
+    std::printf("  scene/textures %10.2f MiB\n", mebibytes(textureBytes));
+    std::printf("  total          %10.2f MiB\n", mebibytes(vertexBytes + indexBytes + textureBytes));
+    return 0;
+}
+
+} // namespace gi::app

@@ -1,0 +1,100 @@
+#include "app/RenderCommand.h"
+
+#include "app/SceneSetup.h"
+#include "app/TimingsReport.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "platform/GlContext.h"
+#include "render/FrameRenderer.h"
+#include "render/ImageIO.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace gi::app {
+namespace {
+
+int fail(int status, const std::string& message) {
+    std::fprintf(stderr, "voxatlas render: %s\n", message.c_str());
+    return status;
+}
+
+const char* modeName(render::GiMode mode) {
+    switch (mode) {
+    case render::GiMode::Direct: return "direct";
+    case render::GiMode::Voxel: return "voxel";
+    case render::GiMode::Atlas: return "atlas";
+    case render::GiMode::Reference: return "reference";
+    }
+    return "?";
+}
+
+} // namespace
+
+int runRender(const Config& config) {
+    std::string error;
+    for (const std::string* path : {&config.outPath, &config.hdrPath, &config.timingsPath}) {
+        if (!path->empty() && !render::checkWritable(*path, error)) return fail(2, error);
+    }
+    if (config.mode != render::GiMode::Direct) {
+        return fail(2, std::string("--mode ") + modeName(config.mode) +
+                " is not available in this build yet (available: direct)");
+    }
+
+    scene::Scene scene;
+    if (!loadScene(config, scene, error)) return fail(2, error);
+
+    const int width = config.width > 0 ? config.width : 512;
+    const int height = config.height > 0 ? config.height : 512;
+    render::CameraView camera;
+    if (!selectCamera(config, scene, float(width) / float(height), camera, error)) return fail(2, error);
+
+    std::string notice;
+    auto context = platform::createHeadlessContext(config.gl, !config.glExplicit, error, notice);
+    if (!context) return fail(1, "no OpenGL 4.5 context: " + error);
+    if (!notice.empty()) std::fprintf(stderr, "voxatlas render: %s\n", notice.c_str());
+    if (config.settings.glDebug) platform::installDebugMessageLog();
+
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    if (!renderer.init(scene, config.settings, shaders, error)) return fail(1, error);
+
+    gl::GpuProfiler profiler;
+    for (int frame = 0; frame < config.settings.warmupFrames; ++frame) {
+        renderer.render(camera, {width, height}, config.output, profiler);
+    }
+    profiler.clearSamples();
+    for (int frame = 0; frame < config.settings.frames; ++frame) {
+        renderer.render(camera, {width, height}, config.output, profiler);
+        profiler.collect();
+    }
+    profiler.flush();
+    if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
+        return fail(1, "OpenGL error 0x" + std::to_string(glError) + " while rendering");
+    }
+
+    const render::Image image = renderer.readback();
+    if (!render::allFinite(image)) return fail(1, "the rendered image has non-finite pixels");
+
+    std::vector<std::string> written;
+    auto cleanUp = [&] {
+        for (const std::string& path : written) std::filesystem::remove(path);
+    };
+    if (!render::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
+    written.push_back(config.outPath);
+    if (!config.hdrPath.empty()) {
+        if (!render::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
+        written.push_back(config.hdrPath);
+    }
+    if (!config.timingsPath.empty()) {
+        TimingsReport report{config.scenePath, modeName(config.mode), std::string(context->provider()),
+                context->description(), width, height, config.settings.frames,
+                profiler.timings(), renderer.memory()};
+        if (!writeTimingsJson(config.timingsPath, report, error)) return cleanUp(), fail(1, error);
+    }
+    std::fprintf(stderr, "voxatlas render: wrote %s (%dx%d, %s, %s)\n", config.outPath.c_str(),
+            width, height, modeName(config.mode), std::string(context->provider()).c_str());
+    return 0;
+}
+
+} // namespace gi::app

@@ -1,0 +1,51 @@
+#include "app/TimingsReport.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace gi::app {
+
+std::string timingsJson(const TimingsReport& report) {
+    nlohmann::json passes = nlohmann::json::array();
+    for (const gl::PassTiming& pass : report.passes) {
+        passes.push_back({{"name", pass.name}, {"gpu_ms_median", pass.gpuMsMedian},
+                {"gpu_ms_mean", pass.gpuMsAverage}, {"cpu_ms_mean", pass.cpuMsAverage},
+                {"samples", pass.samples}});
+    }
+    nlohmann::json memory = nlohmann::json::object();
+    std::size_t total = 0;
+    for (const gl::MemoryItem& item : report.memory) {
+        memory[item.name] = item.bytes;
+        total += item.bytes;
+    }
+    const nlohmann::json json = {{"scene", report.scene}, {"mode", report.mode},
+            {"gl_provider", report.provider}, {"gl_renderer", report.renderer},
+            {"width", report.width}, {"height", report.height}, {"frames", report.frames},
+            {"passes", passes}, {"memory_bytes", memory}, {"memory_bytes_total", total}};
+    return json.dump(2) + "\n";
+}
+
+bool writeTimingsJson(const std::string& path, const TimingsReport& report, std::string& error) {
+    const std::string temporary = path + ".partial";
+    {
+        std::ofstream out(temporary);
+        out << timingsJson(report);
+        if (!out) {
+            std::filesystem::remove(temporary);
+            error = path + ": cannot write timings file";
+            return false;
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        error = path + ": cannot write timings file";
+        return false;
+    }
+    return true;
+}
+
+} // namespace gi::app

@@ -1,0 +1,24 @@
+// The --timings JSON: per-pass GPU milliseconds (median and mean over the timed frames),
+// CPU issue time, and the GPU memory each resource allocated, for scripts and the bench.
+#pragma once
+
+#include "gl/GpuProfiler.h"
+#include "gl/Objects.h"
+
+#include <string>
+#include <vector>
+
+namespace gi::app {
+
+struct TimingsReport {
+    std::string scene, mode, provider, renderer;
+    int width = 0, height = 0, frames = 0;
+    std::vector<gl::PassTiming> passes;
+    std::vector<gl::MemoryItem> memory;
+};
+
+[[nodiscard]] std::string timingsJson(const TimingsReport& report);
+[[nodiscard]] bool writeTimingsJson(const std::string& path, const TimingsReport& report,
+        std::string& error);
+
+} // namespace gi::app

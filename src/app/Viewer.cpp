@@ -1,0 +1,426 @@
+#include "app/Viewer.h"
+
+#include "app/FlyCamera.h"
+#include "app/RenderCommand.h"
+#include "app/SceneSetup.h"
+#include "app/Ui.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "platform/GlfwWindow.h"
+#include "render/FrameRenderer.h"
+#include "render/ImageIO.h"
+#include "render/PresentPass.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+namespace gi::app {
+namespace {
+
+constexpr int kDefaultWidth = 1280;
+constexpr int kDefaultHeight = 720;
+constexpr double kNoticeSeconds = 6.0;
+constexpr float kMaxStepSeconds = 0.1f;   // a stalled frame does not fling the camera away
+constexpr const char* kHeadlessScreenshot = "voxatlas-view.png";
+
+void say(const std::string& message) {
+    std::fprintf(stderr, "voxatlas view: %s\n", message.c_str());
+}
+
+int fail(int status, const std::string& message) {
+    say(message);
+    return status;
+}
+
+// The GI modes on the number keys. A mode becomes selectable by marking it available here once
+// FrameRenderer renders it; everything else (help text, notice, overlay) follows this table.
+struct ModeKey {
+    const char* key;
+    render::GiMode mode;
+    const char* name;
+    bool available;
+};
+constexpr std::array kModeKeys = {
+    ModeKey{"1", render::GiMode::Direct, "direct", true},
+    ModeKey{"2", render::GiMode::Voxel, "voxel GI", false},
+    ModeKey{"3", render::GiMode::Atlas, "atlas GI", false},
+};
+
+const char* modeName(render::GiMode mode) {
+    for (const ModeKey& entry : kModeKeys) {
+        if (entry.mode == mode) return entry.name;
+    }
+    return "?";
+}
+
+const char* outputName(render::OutputComponent output) {
+    switch (output) {
+    case render::OutputComponent::Final: return "final";
+    case render::OutputComponent::Direct: return "direct";
+    case render::OutputComponent::Indirect: return "indirect";
+    }
+    return "?";
+}
+
+std::string upper(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+            [](unsigned char c) { return char(std::toupper(c)); });
+    return text == "ESC" ? "ESCAPE" : text;
+}
+
+// F12 without --screenshot: the first voxatlas-<n>.png that does not exist yet.
+std::string nextScreenshotPath() {
+    for (int n = 1;; ++n) {
+        const std::string path = "voxatlas-" + std::to_string(n) + ".png";
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) return path;
+    }
+}
+
+class Viewer {
+public:
+    Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
+            std::unique_ptr<platform::GlfwWindow> window, const render::CameraView& camera);
+    int run();
+
+private:
+    struct Hotkey {
+        std::string key;
+        std::string help;
+        std::function<void()> action;
+    };
+
+    void handleKey(const std::string& name);
+    void selectMode(const ModeKey& entry);
+    void cycleOutput();
+    void nextCamera();
+    void reloadShaders();
+    FlyInput readInput();
+    UiFrame uiFrame(double frameMs) const;
+    bool writeScreenshot(const render::Image& image, const std::string& path);
+    void notify(const std::string& message);
+    std::string cameraLabel() const;
+
+    const Config& mConfig;
+    std::unique_ptr<scene::Scene> mScene;
+    // Declared before every GL object so the context outlives them all.
+    std::unique_ptr<platform::GlfwWindow> mWindow;
+    gl::ShaderLibrary mShaders;
+    gl::GpuProfiler mProfiler;
+    render::FrameRenderer mRenderer;
+    render::PresentPass mPresent;
+    Ui mUi;
+
+    Settings mSettings;
+    FlyCamera mCamera;
+    int mCameraIndex = 0;                     // scene camera; -1 = the --camera spec
+    render::GiMode mMode = render::GiMode::Direct;
+    render::OutputComponent mOutput = render::OutputComponent::Final;
+    std::vector<Hotkey> mHotkeys;
+    bool mQuit = false;
+    bool mScreenshotRequested = false;
+    bool mLooking = false;
+    glm::dvec2 mLastCursor{0.0};
+    std::string mNotice;
+    std::chrono::steady_clock::time_point mNoticeTime;
+    std::string mShaderErrors;
+};
+
+Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
+        std::unique_ptr<platform::GlfwWindow> window, const render::CameraView& camera)
+    : mConfig(config), mScene(std::move(scene)), mWindow(std::move(window)),
+      mSettings(config.settings), mCamera(camera, mScene->bounds),
+      mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex) {
+    mHotkeys.push_back({"H", "show / hide this help", [this] { mUi.toggleHelp(); }});
+    for (const ModeKey& entry : kModeKeys) {
+        mHotkeys.push_back({entry.key,
+                std::string(entry.name) + (entry.available ? "" : " (not in this build yet)"),
+                [this, &entry] { selectMode(entry); }});
+    }
+    mHotkeys.push_back({"O", "output: final / direct / indirect", [this] { cycleOutput(); }});
+    mHotkeys.push_back({"C", "next scene camera", [this] { nextCamera(); }});
+    mHotkeys.push_back({"V", "vsync on / off", [this] {
+        mWindow->setVsync(!mWindow->vsync());
+        notify(std::string("vsync ") + (mWindow->vsync() ? "on" : "off"));
+    }});
+    mHotkeys.push_back({"R", "reload shaders", [this] { reloadShaders(); }});
+    mHotkeys.push_back({"F12", "screenshot (without the overlay)",
+            [this] { mScreenshotRequested = true; }});
+    mHotkeys.push_back({"ESCAPE", "quit", [this] { mQuit = true; }});
+}
+
+void Viewer::handleKey(const std::string& name) {
+    const std::string key = upper(name);
+    for (const Hotkey& hotkey : mHotkeys) {
+        if (hotkey.key == key) {
+            hotkey.action();
+            return;
+        }
+    }
+}
+
+void Viewer::notify(const std::string& message) {
+    mNotice = message;
+    mNoticeTime = std::chrono::steady_clock::now();
+}
+
+void Viewer::selectMode(const ModeKey& entry) {
+    if (!entry.available) {
+        const std::string message = std::string(entry.name) + " is not available in this build yet";
+        notify(message);
+        say(message);
+        return;
+    }
+    mMode = entry.mode;
+    notify(std::string("mode: ") + entry.name);
+}
+
+void Viewer::cycleOutput() {
+    mOutput = mOutput == render::OutputComponent::Final    ? render::OutputComponent::Direct
+              : mOutput == render::OutputComponent::Direct ? render::OutputComponent::Indirect
+                                                           : render::OutputComponent::Final;
+    notify(std::string("output: ") + outputName(mOutput));
+}
+
+void Viewer::nextCamera() {
+    if (mScene->cameras.empty()) return;
+    const int count = int(mScene->cameras.size());
+    mCameraIndex = (mCameraIndex + 1) % count;
+    const glm::ivec2 size = glm::max(mWindow->framebufferSize(), glm::ivec2(1));
+    mCamera.reset(render::cameraFromScene(mScene->cameras[std::size_t(mCameraIndex)],
+            float(size.x) / float(size.y), mScene->bounds));
+    notify("camera " + cameraLabel());
+}
+
+void Viewer::reloadShaders() {
+    std::string errors;
+    if (mShaders.reloadAll(errors)) {
+        mShaderErrors.clear();
+        notify("shaders reloaded");
+        return;
+    }
+    mShaderErrors = errors;
+    notify("shader reload failed; the previous programs stay in use");
+    std::fprintf(stderr,
+            "voxatlas view: shader reload failed, keeping the previous programs:\n%s\n",
+            errors.c_str());
+}
+
+std::string Viewer::cameraLabel() const {
+    std::string label;
+    if (mCameraIndex < 0) {
+        label = "--camera";
+    } else {
+        const scene::Camera& camera = mScene->cameras[std::size_t(mCameraIndex)];
+        label = std::to_string(mCameraIndex + 1) + "/" + std::to_string(mScene->cameras.size());
+        if (!camera.name.empty()) label += " " + camera.name;
+    }
+    return mCamera.atStart() ? label : label + " (moved)";
+}
+
+FlyInput Viewer::readInput() {
+    FlyInput input;
+    if (!mUi.wantsKeyboard()) {
+        input.forward = mWindow->keyDown(GLFW_KEY_W);
+        input.back = mWindow->keyDown(GLFW_KEY_S);
+        input.left = mWindow->keyDown(GLFW_KEY_A);
+        input.right = mWindow->keyDown(GLFW_KEY_D);
+        input.down = mWindow->keyDown(GLFW_KEY_Q);
+        input.up = mWindow->keyDown(GLFW_KEY_E);
+        input.fast =
+                mWindow->keyDown(GLFW_KEY_LEFT_SHIFT) || mWindow->keyDown(GLFW_KEY_RIGHT_SHIFT);
+    }
+    const bool held = mWindow->mouseButtonDown(GLFW_MOUSE_BUTTON_RIGHT) ||
+                      mWindow->mouseButtonDown(GLFW_MOUSE_BUTTON_LEFT);
+    const glm::dvec2 cursor = mWindow->cursorPosition();
+    // A drag that starts on the overlay belongs to the overlay for its whole length.
+    if (held && !mLooking && !mUi.wantsMouse()) {
+        mLooking = true;
+        mLastCursor = cursor;
+    }
+    if (!held) mLooking = false;
+    input.look = mLooking;
+    input.mouseDelta = mLooking ? glm::vec2(cursor - mLastCursor) : glm::vec2(0.0f);
+    mLastCursor = cursor;
+    const double scroll = mWindow->takeScroll();
+    input.scrollSteps = mUi.wantsMouse() ? 0.0f : float(scroll);
+    return input;
+}
+
+UiFrame Viewer::uiFrame(double frameMs) const {
+    UiFrame frame;
+    frame.frameMs = frameMs;
+    frame.timings = mProfiler.timings();
+    frame.memory = mRenderer.memory();
+    frame.mode = modeName(mMode);
+    frame.output = outputName(mOutput);
+    frame.camera = cameraLabel();
+    frame.triangles = mScene->triangleCount();
+    frame.framebufferSize = mWindow->framebufferSize();
+    frame.vsync = mWindow->vsync();
+    frame.speed = mCamera.speed();
+    const double age = std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                     mNoticeTime).count();
+    if (age < kNoticeSeconds) frame.notice = mNotice;
+    frame.shaderErrors = mShaderErrors;
+    return frame;
+}
+
+bool Viewer::writeScreenshot(const render::Image& image, const std::string& path) {
+    std::string error;
+    if (!render::writePng(path, image, error)) {
+        notify("screenshot failed: " + error);
+        say(error);
+        return false;
+    }
+    notify("screenshot: " + path);
+    say("wrote " + path + " (" + std::to_string(image.width) + "x" +
+            std::to_string(image.height) + ")");
+    return true;
+}
+
+int Viewer::run() {
+    std::string error;
+    if (!mRenderer.init(*mScene, mSettings, mShaders, error)) return fail(1, error);
+    if (!mPresent.init(mShaders, error)) return fail(1, error);
+    if (!mUi.init(*mWindow, error)) return fail(1, error);
+    std::vector<HotkeyHelp> help = {{"W A S D", "move"}, {"Q / E", "down / up"},
+            {"Shift", "move x4 faster"}, {"mouse drag", "look around (right or left button)"},
+            {"wheel", "movement speed"}};
+    for (const Hotkey& hotkey : mHotkeys) {
+        help.push_back({hotkey.key == "ESCAPE" ? "Esc" : hotkey.key, hotkey.help});
+    }
+    mUi.setHotkeys(std::move(help));
+    // Scripted runs go as fast as they can; interactive ones follow the display.
+    mWindow->setVsync(mConfig.frames == 0);
+    for (const KeyEvent& event : mConfig.keys) {
+        if (mConfig.frames > 0 && event.frame >= mConfig.frames) {
+            say("--keys " + std::to_string(event.frame) + ":" + event.key +
+                    " is after the last frame (--frames " + std::to_string(mConfig.frames) +
+                    ", counted from 0) and will not fire");
+        }
+    }
+
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point previous = Clock::now();
+    bool rendered = false, finalWritten = false;
+    for (int frame = 0; mConfig.frames == 0 || frame < mConfig.frames; ++frame) {
+        mWindow->pollEvents();
+        for (int key : mWindow->takeKeyPresses()) {
+            if (!mUi.wantsKeyboard()) handleKey(platform::keyName(key));
+        }
+        for (const KeyEvent& event : mConfig.keys) {
+            if (event.frame == frame) handleKey(event.key);
+        }
+        if (mQuit || mWindow->shouldClose()) break;
+
+        const Clock::time_point now = Clock::now();
+        const double seconds = std::chrono::duration<double>(now - previous).count();
+        previous = now;
+        mCamera.update(readInput(), std::min(float(seconds), kMaxStepSeconds));
+
+        const glm::ivec2 size = mWindow->framebufferSize();
+        if (size.x <= 0 || size.y <= 0) {
+            mWindow->waitEvents(0.1);
+            continue;
+        }
+        mRenderer.render(mCamera.view(float(size.x) / float(size.y)), size, mOutput, mProfiler);
+        mPresent.execute({mRenderer.radiance()}, {size}, mProfiler);
+        rendered = true;
+        // Screenshots are taken before the overlay is drawn (view.screenshot_ui aside).
+        if (mScreenshotRequested) {
+            mScreenshotRequested = false;
+            const std::string path =
+                    mConfig.screenshotPath.empty() ? nextScreenshotPath() : mConfig.screenshotPath;
+            (void)writeScreenshot(mRenderer.readback(), path);
+        }
+        if (mUi.draw(uiFrame(seconds * 1000.0), mSettings, mProfiler)) {
+            mRenderer.setSettings(mSettings);
+        }
+        const bool lastFrame = mConfig.frames > 0 && frame + 1 == mConfig.frames;
+        if (lastFrame && mSettings.screenshotUi && !mConfig.screenshotPath.empty()) {
+            finalWritten = true;
+            if (!writeScreenshot(render::PresentPass::readDefaultFramebuffer(size),
+                        mConfig.screenshotPath)) {
+                return 1;
+            }
+        }
+        mWindow->swapBuffers();
+        mProfiler.collect();
+    }
+
+    if (!mConfig.screenshotPath.empty() && !finalWritten) {
+        if (!rendered) {
+            return fail(1, "no frame was rendered, so " + mConfig.screenshotPath +
+                    " was not written");
+        }
+        if (!writeScreenshot(mRenderer.readback(), mConfig.screenshotPath)) return 1;
+    }
+    if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
+        char code[16];
+        std::snprintf(code, sizeof code, "0x%04x", glError);
+        return fail(1, std::string("OpenGL error ") + code + " during the session");
+    }
+    return 0;
+}
+
+} // namespace
+
+int runViewer(const Config& config) {
+    std::string error;
+    if (!config.screenshotPath.empty() && !render::checkWritable(config.screenshotPath, error)) {
+        return fail(2, error);
+    }
+    for (const KeyEvent& event : config.keys) {
+        if (platform::keyFromName(event.key) < 0) {
+            return fail(2, "--keys: unknown key '" + event.key +
+                    "' (names like H, 1, F12, ESCAPE)");
+        }
+    }
+
+    auto scene = std::make_unique<scene::Scene>();
+    if (!loadScene(config, *scene, error)) return fail(2, error);
+    const int width = config.width > 0 ? config.width : kDefaultWidth;
+    const int height = config.height > 0 ? config.height : kDefaultHeight;
+    render::CameraView camera;
+    if (!selectCamera(config, *scene, float(width) / float(height), camera, error)) {
+        return fail(2, error);
+    }
+
+    platform::WindowOptions options;
+    options.title = "voxatlas - " + std::filesystem::path(config.scenePath).filename().string();
+    options.width = width;
+    options.height = height;
+    options.debugContext = config.settings.glDebug;
+    platform::WindowFailure failure = platform::WindowFailure::None;
+    auto window = platform::GlfwWindow::create(options, failure, error);
+    if (!window) {
+        if (failure != platform::WindowFailure::NoDisplay) return fail(1, error);
+        scene.reset();
+        Config headless = config;
+        headless.command = Command::Render;
+        headless.outPath =
+                config.screenshotPath.empty() ? kHeadlessScreenshot : config.screenshotPath;
+        headless.width = width;
+        headless.height = height;
+        const std::string prefix = "no display: ";
+        const std::string reason =
+                error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error;
+        say("no display (" + reason + "); rendering a headless screenshot to " + headless.outPath +
+                " instead");
+        return runRender(headless);
+    }
+    Viewer viewer(config, std::move(scene), std::move(window), camera);
+    return viewer.run();
+}
+
+} // namespace gi::app

@@ -1,0 +1,60 @@
+// The interface the renderer drives for a global-illumination technique. A technique turns
+// the scene and its direct light into indirect irradiance E_ind (W/m^2) of the surface seen
+// in each pixel; the final pass multiplies it by the surface's albedo / pi (DESIGN.md:
+// L_ind = rho/pi * E_ind). Voxel cone tracing (gi/voxel) and the atlas gather (gi/atlas)
+// implement it without knowing each other.
+#pragma once
+
+#include "gl/GpuProfiler.h"
+#include "gl/Objects.h"
+#include "gl/ShaderLibrary.h"
+#include "render/CameraView.h"
+#include "render/Settings.h"
+#include "render/ShadowPass.h"
+#include "scene/GpuScene.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gi {
+
+// Views a technique can show instead of the final image (--output and viewer hotkeys).
+enum class DebugView { None, VoxelAlbedo, VoxelIrradiance, VoxelNormal };
+
+struct GiFrameInputs {
+    const scene::GpuScene& scene;          // world-space geometry, materials, lights
+    const render::ShadowPass& shadows;     // shadow maps of every light, already rendered
+    const gl::Buffer& frameUniforms;       // FrameUniforms of the camera view (std140)
+    const render::CameraView& camera;
+    glm::ivec2 outputSize;                 // full-resolution render size, pixels
+    DebugView debugView = DebugView::None;
+};
+
+struct GiOutputs {
+    // Screen-space indirect irradiance, RGBA16F: rgb = E_ind (W/m^2) of the surface in the
+    // pixel, a = its distance along the view axis (m) for depth-aware upsampling; 0 = empty.
+    const gl::Texture* indirect = nullptr;
+    glm::ivec2 size{0};                    // pixels; may be smaller than the output
+    // Debug views: linear radiance to show instead of the final image (full resolution,
+    // RGBA32F, alpha = coverage), or nullptr.
+    const gl::Texture* debugImage = nullptr;
+};
+
+class GiTechnique {
+public:
+    virtual ~GiTechnique() = default;
+    virtual const char* name() const = 0;
+    // Builds programs; false with one message on failure.
+    virtual bool init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) = 0;
+    // Applies settings, reallocating only what changed. False with a message if the settings
+    // cannot be honoured (e.g. beyond GL limits).
+    virtual bool configure(const Settings& settings, std::string& error) = 0;
+    virtual void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) = 0;
+    virtual GiOutputs outputs() const = 0;
+    virtual std::vector<gl::MemoryItem> memory() const = 0;
+};
+
+} // namespace gi

@@ -1,0 +1,79 @@
+// Per-pass GPU and CPU timing. A GpuScope brackets a pass with two GL_TIMESTAMP queries and a
+// debug group named after the pass. Each pass keeps a ring of query pairs that is read only
+// once GL_QUERY_RESULT_AVAILABLE is set, so the frame never waits on the GPU; results feed a
+// 64-frame running average (overlay) and the full sample list (medians for --timings/bench).
+// A scope nested in another is timed too; totals are per pass name, not exclusive.
+#pragma once
+
+#include "gl/Handle.h"
+
+#include <array>
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gi::gl {
+
+struct PassTiming {
+    std::string name;
+    double gpuMsAverage = 0.0;   // mean over the last (up to) 64 resolved frames
+    double gpuMsMedian = 0.0;    // median over every resolved sample
+    double cpuMsAverage = 0.0;   // CPU time spent issuing the pass, same window
+    int samples = 0;             // resolved GPU samples
+};
+
+class GpuProfiler {
+public:
+    static constexpr int kRingSize = 4;
+    static constexpr int kAverageWindow = 64;
+
+    GpuProfiler() = default;
+    GpuProfiler(const GpuProfiler&) = delete;
+    GpuProfiler& operator=(const GpuProfiler&) = delete;
+
+    void begin(const std::string& name);
+    void end(const std::string& name);
+
+    // Collects every query whose result is available, without waiting.
+    void collect();
+    // Waits for every outstanding query (headless runs, tests and benches only).
+    void flush();
+    // Forgets all samples (e.g. after warm-up frames).
+    void clearSamples();
+
+    // Passes in first-use order.
+    [[nodiscard]] std::vector<PassTiming> timings() const;
+
+private:
+    struct QueryPair {
+        Query start, stop;
+        bool pending = false;
+        double cpuMs = 0.0;
+    };
+    struct PassRecord {
+        std::array<QueryPair, kRingSize> ring;
+        int next = 0;
+        std::chrono::steady_clock::time_point cpuStart;
+        std::vector<double> gpuMs, cpuMs;
+    };
+    void resolve(PassRecord& record, QueryPair& pair, bool wait);
+
+    std::map<std::string, PassRecord> mPasses;
+    std::vector<std::string> mOrder;
+};
+
+// RAII scope: times the enclosed GL commands as pass `name` and labels them as a debug group.
+class GpuScope {
+public:
+    GpuScope(GpuProfiler& profiler, std::string name);
+    ~GpuScope();
+    GpuScope(const GpuScope&) = delete;
+    GpuScope& operator=(const GpuScope&) = delete;
+
+private:
+    GpuProfiler& mProfiler;
+    std::string mName;
+};
+
+} // namespace gi::gl

@@ -1,0 +1,50 @@
+// Creation helpers for the GL objects the passes use. Each allocates immutable storage with
+// the DSA entry points and labels the object (the label shows in debug output and captures).
+// textureBytes() gives the size of what was allocated, for the memory reports.
+#pragma once
+
+#include "gl/Handle.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace gi::gl {
+
+// Bytes per texel of the sized internal formats the project uses (0 for unknown formats).
+[[nodiscard]] std::size_t bytesPerTexel(GLenum internalFormat);
+
+// Bytes of immutable storage for a texture of `size` texels with `levels` mip levels.
+[[nodiscard]] std::size_t textureBytes(GLenum internalFormat, glm::ivec3 size, int levels);
+
+// One line of a memory report: what a resource is and how many bytes it allocated.
+struct MemoryItem {
+    std::string name;
+    std::size_t bytes = 0;
+};
+
+[[nodiscard]] Buffer createBuffer(std::size_t bytes, const void* data, GLbitfield flags,
+        const char* label);
+[[nodiscard]] Texture createTexture2D(GLenum internalFormat, glm::ivec2 size, int levels,
+        const char* label);
+[[nodiscard]] Texture createTexture3D(GLenum internalFormat, glm::ivec3 size, int levels,
+        const char* label);
+[[nodiscard]] Texture createTextureCubeArray(GLenum internalFormat, int size, int layers,
+        const char* label);
+[[nodiscard]] Texture createTexture2DArray(GLenum internalFormat, glm::ivec2 size, int layers,
+        const char* label);
+[[nodiscard]] Framebuffer createFramebuffer(const char* label);
+[[nodiscard]] VertexArray createVertexArray(const char* label);
+[[nodiscard]] Sampler createSampler(GLenum minFilter, GLenum magFilter, GLenum wrap,
+        const char* label);
+
+// Checks glCheckNamedFramebufferStatus; on failure writes a message naming the framebuffer.
+[[nodiscard]] bool framebufferComplete(const Framebuffer& framebuffer, const char* label,
+        std::string& error);
+
+// Number of mip levels of a full chain for the largest of the given extents.
+[[nodiscard]] int fullMipCount(int largestExtent);
+
+} // namespace gi::gl

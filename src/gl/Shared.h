@@ -1,0 +1,20 @@
+// C++ view of shaders/common/shared.h: the GLSL vector types are glm's, and the layouts are
+// checked here so a struct edited on one side fails the build instead of the picture.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace gi::shader {
+using glm::ivec4;
+using glm::mat4;
+using glm::vec4;
+} // namespace gi::shader
+
+#include "common/shared.h"
+
+static_assert(sizeof(gi::shader::FrameUniforms) == 176, "FrameUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::GpuLight) == 64, "GpuLight std430 layout drifted");
+static_assert(sizeof(gi::shader::GpuMaterial) == 48, "GpuMaterial std430 layout drifted");
+static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
+static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 4 + 64 + 16,
+        "VoxelUniforms std140 layout drifted");

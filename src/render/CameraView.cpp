@@ -1,0 +1,56 @@
+#include "render/CameraView.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gi::render {
+namespace {
+
+// Far plane past the farthest bounds corner; near plane a fixed fraction of it, which keeps
+// a 24/32-bit depth buffer precise over the whole scene.
+void fitDepthRange(CameraView& camera, const scene::Aabb& bounds, float znear, float zfar) {
+    float farthest = 1.0f;
+    if (!bounds.empty()) {
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x,
+                    (i & 2) ? bounds.max.y : bounds.min.y, (i & 4) ? bounds.max.z : bounds.min.z);
+            farthest = std::max(farthest, glm::length(corner - camera.eye));
+        }
+        farthest = std::max(farthest, 1e-3f);
+    }
+    camera.zfar = zfar > 0.0f ? zfar : farthest * 1.05f;
+    camera.znear = znear > 0.0f ? std::min(znear, camera.zfar * 0.5f) : camera.zfar * 1e-4f;
+    camera.projection = glm::perspective(camera.yfov, camera.aspect, camera.znear, camera.zfar);
+}
+
+} // namespace
+
+CameraView cameraFromScene(const scene::Camera& camera, float aspect, const scene::Aabb& bounds) {
+    CameraView view;
+    view.view = glm::inverse(camera.worldFromCamera);
+    view.eye = glm::vec3(camera.worldFromCamera[3]);
+    view.yfov = camera.yfov;
+    view.aspect = aspect;
+    fitDepthRange(view, bounds, camera.znear, camera.zfar);
+    return view;
+}
+
+CameraView cameraLookAt(const glm::vec3& eye, const glm::vec3& target, float yfovRadians,
+        float aspect, const scene::Aabb& bounds) {
+    CameraView view;
+    glm::vec3 forward = target - eye;
+    if (glm::length(forward) < 1e-12f) forward = glm::vec3(0.0f, 0.0f, -1.0f);
+    forward = glm::normalize(forward);
+    const glm::vec3 up = std::abs(forward.y) > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f)
+                                                      : glm::vec3(0.0f, 1.0f, 0.0f);
+    view.view = glm::lookAt(eye, eye + forward, up);
+    view.eye = eye;
+    view.yfov = yfovRadians;
+    view.aspect = aspect;
+    fitDepthRange(view, bounds, 0.0f, 0.0f);
+    return view;
+}
+
+} // namespace gi::render

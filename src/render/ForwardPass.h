@@ -1,0 +1,37 @@
+// Final shading at full resolution: Lambertian + Blinn-Phong direct light from every light
+// (DESIGN.md conventions) plus emission, into a linear-radiance target.
+// Inputs : the GpuScene (vertices, materials, lights), shadow maps, the frame UBO.
+// Outputs: colour RGBA32F, linear radiance W/(m^2 sr), alpha = 1 on geometry, 0 elsewhere;
+//          depth DEPTH_COMPONENT32F.
+#pragma once
+
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "scene/GpuScene.h"
+#include "render/ShadowPass.h"
+
+#include <glm/glm.hpp>
+
+namespace gi::render {
+
+class ForwardPass {
+public:
+    struct Inputs {
+        const scene::GpuScene& scene;
+        const ShadowPass& shadows;         // maps and GpuShadow table, already rendered
+        const gl::Buffer& frameUniforms;   // FrameUniforms, std140
+    };
+    struct Outputs {
+        const gl::Framebuffer& target;     // colour attachment 0 + depth
+        glm::ivec2 size;                   // pixels
+    };
+
+    // Returns false with the shader error if the program does not build.
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
+
+private:
+    gl::ProgramRef mProgram;
+};
+
+} // namespace gi::render

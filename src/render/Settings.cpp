@@ -1,0 +1,174 @@
+#include "render/Settings.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace gi {
+namespace {
+
+std::string formatFloat(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(value));
+    return text;
+}
+
+template <class Access>
+SettingSpec intSetting(std::string key, std::string help, int min, int max, Access access) {
+    return {std::move(key), std::move(help) + " [" + std::to_string(min) + ".." + std::to_string(max) + "]",
+            [access](const Settings& s) { return std::to_string(access(const_cast<Settings&>(s))); },
+            [access, min, max](Settings& s, const std::string& text, std::string& error) {
+                int value = 0;
+                const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+                if (ec != std::errc() || end != text.data() + text.size()) {
+                    error = "'" + text + "' is not an integer";
+                    return false;
+                }
+                if (value < min || value > max) {
+                    error = text + " is outside [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+                    return false;
+                }
+                access(s) = value;
+                return true;
+            }};
+}
+
+template <class Access>
+SettingSpec floatSetting(std::string key, std::string help, float min, float max, Access access) {
+    return {std::move(key), std::move(help) + " [" + formatFloat(min) + ".." + formatFloat(max) + "]",
+            [access](const Settings& s) { return formatFloat(access(const_cast<Settings&>(s))); },
+            [access, min, max](Settings& s, const std::string& text, std::string& error) {
+                float value = 0.0f;
+                const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+                if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+                    error = "'" + text + "' is not a finite number";
+                    return false;
+                }
+                if (value < min || value > max) {
+                    error = text + " is outside [" + formatFloat(min) + ", " + formatFloat(max) + "]";
+                    return false;
+                }
+                access(s) = value;
+                return true;
+            }};
+}
+
+template <class Access>
+SettingSpec boolSetting(std::string key, std::string help, Access access) {
+    return {std::move(key), std::move(help) + " [0|1]",
+            [access](const Settings& s) { return std::string(access(const_cast<Settings&>(s)) ? "1" : "0"); },
+            [access](Settings& s, const std::string& text, std::string& error) {
+                if (text == "1" || text == "true" || text == "on") access(s) = true;
+                else if (text == "0" || text == "false" || text == "off") access(s) = false;
+                else {
+                    error = "'" + text + "' is not 0 or 1";
+                    return false;
+                }
+                return true;
+            }};
+}
+
+SettingSpec hidden(SettingSpec spec) {
+    spec.hidden = true;
+    return spec;
+}
+
+} // namespace
+
+const std::vector<SettingSpec>& settingSpecs() {
+    static const std::vector<SettingSpec> specs = {
+        intSetting("render.supersample", "samples per pixel per axis, box-averaged", 1, 4,
+                [](Settings& s) -> int& { return s.supersample; }),
+        intSetting("render.frames", "frames rendered; --timings reports their median", 1, 1000,
+                [](Settings& s) -> int& { return s.frames; }),
+        intSetting("render.warmup", "frames rendered before timing starts", 0, 1000,
+                [](Settings& s) -> int& { return s.warmupFrames; }),
+        boolSetting("gl.debug", "log KHR_debug messages to stderr",
+                [](Settings& s) -> bool& { return s.glDebug; }),
+        floatSetting("material.specular", "Blinn-Phong specular strength ks (0 = Lambert only)",
+                0.0f, 1.0f, [](Settings& s) -> float& { return s.specular; }),
+        floatSetting("material.shininess", "Blinn-Phong exponent n", 1.0f, 4096.0f,
+                [](Settings& s) -> float& { return s.shininess; }),
+        boolSetting("shadow.enabled", "shadow maps for every light",
+                [](Settings& s) -> bool& { return s.shadow.enabled; }),
+        intSetting("shadow.resolution", "texels per side of each shadow map / cube face", 16, 8192,
+                [](Settings& s) -> int& { return s.shadow.resolution; }),
+        floatSetting("shadow.normal_offset", "lookup offset along the normal, in shadow texels",
+                0.0f, 16.0f, [](Settings& s) -> float& { return s.shadow.normalOffset; }),
+        floatSetting("shadow.pcf_radius", "spacing of the PCF taps, in shadow texels", 0.0f, 8.0f,
+                [](Settings& s) -> float& { return s.shadow.pcfRadius; }),
+        intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
+                [](Settings& s) -> int& { return s.voxel.resolution; }),
+        intSetting("voxel.cascades", "nested cascade levels, each doubling the edge", 1, 8,
+                [](Settings& s) -> int& { return s.voxel.levels; }),
+        intSetting("voxel.multiplier", "voxelization raster resolution / voxel resolution", 1, 16,
+                [](Settings& s) -> int& { return s.voxel.multiplier; }),
+        intSetting("voxel.inject_resolution", "light-view resolution for injection (0 = voxel.resolution)",
+                0, 4096, [](Settings& s) -> int& { return s.voxel.injectResolution; }),
+        floatSetting("voxel.trace_scale", "cone-trace resolution per axis / output resolution",
+                0.0625f, 1.0f, [](Settings& s) -> float& { return s.voxel.traceScale; }),
+        floatSetting("voxel.max_distance", "cone length in metres (0 = to the coarsest level's edge)",
+                0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.maxDistance; }),
+        floatSetting("voxel.extent", "finest level edge in metres (0 = derived from the scene)", 0.0f,
+                1e6f, [](Settings& s) -> float& { return s.voxel.extent; }),
+        floatSetting("voxel.cone_angle", "full aperture of each of the 9 diffuse cones, degrees", 5.0f,
+                90.0f, [](Settings& s) -> float& { return s.voxel.coneAngle; }),
+        floatSetting("voxel.step", "cone sample spacing in cone diameters", 0.1f, 2.0f,
+                [](Settings& s) -> float& { return s.voxel.stepFactor; }),
+        boolSetting("voxel.falloff", "apply the thesis' 1/(1+d^2) attenuation to cone samples",
+                [](Settings& s) -> bool& { return s.voxel.falloff; }),
+        boolSetting("voxel.upsample_depth", "depth-aware upsampling of the traced indirect light",
+                [](Settings& s) -> bool& { return s.voxel.depthUpsample; }),
+        intSetting("voxel.debug_level", "cascade level shown by the voxel debug views", 0, 7,
+                [](Settings& s) -> int& { return s.voxel.debugLevel; }),
+        intSetting("reference.spp", "reference renderer: paths per pixel", 1, 65536,
+                [](Settings& s) -> int& { return s.reference.spp; }),
+        intSetting("reference.bounces", "reference renderer: indirect bounces (1 = one bounce)",
+                1, 16, [](Settings& s) -> int& { return s.reference.bounces; }),
+        intSetting("reference.seed", "reference renderer: random seed", 0, 2147483647,
+                [](Settings& s) -> int& { return s.reference.seed; }),
+        intSetting("reference.threads", "reference renderer: threads (0 = all cores)", 0, 1024,
+                [](Settings& s) -> int& { return s.reference.threads; }),
+        hidden(boolSetting("view.screenshot_ui",
+                "view --frames N --screenshot includes the overlay",
+                [](Settings& s) -> bool& { return s.screenshotUi; })),
+    };
+    return specs;
+}
+
+bool applySetting(Settings& settings, const std::string& assignment, std::string& error) {
+    const std::size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0) {
+        error = "--set expects key=value, got '" + assignment + "'";
+        return false;
+    }
+    const std::string key = assignment.substr(0, eq);
+    const std::string value = assignment.substr(eq + 1);
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (spec.key != key) continue;
+        std::string why;
+        if (!spec.set(settings, value, why)) {
+            error = "--set " + key + ": " + why;
+            return false;
+        }
+        return true;
+    }
+    error = "--set: unknown key '" + key + "' (voxatlas render --help lists them)";
+    return false;
+}
+
+std::string settingsHelp() {
+    const Settings defaults;
+    std::ostringstream out;
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (spec.hidden) continue;
+        char line[256];
+        std::snprintf(line, sizeof line, "  %-22s %-8s %s\n", spec.key.c_str(),
+                spec.get(defaults).c_str(), spec.help.c_str());
+        out << line;
+    }
+    return out.str();
+}
+
+} // namespace gi

@@ -1,0 +1,80 @@
+// Every tunable of a render, with its default, in one struct that feeds the command line
+// (`--set key=value`), the viewer's widgets and the tests. The key table below is the single
+// source of `voxatlas render --help`, of validation ranges, and of what `--set` accepts.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gi {
+
+struct ShadowSettings {
+    bool enabled = true;          // shadow.enabled
+    int resolution = 1024;        // shadow.resolution: texels per side of every map and cube face
+    float normalOffset = 1.5f;    // shadow.normal_offset: texels of footprint along the normal
+    float pcfRadius = 1.0f;       // shadow.pcf_radius: texels between PCF taps
+    bool operator==(const ShadowSettings&) const = default;
+};
+
+// Voxel cone tracing (SEEDS.md section 1); defaults are the thesis' reference settings.
+struct VoxelSettings {
+    int resolution = 32;          // voxel.resolution: v, voxels per axis of every cascade level
+    int levels = 3;               // voxel.cascades: l, nested levels, each twice the previous edge
+    int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
+    int injectResolution = 0;     // voxel.inject_resolution: light-view pixels; 0 = v (thesis)
+    float traceScale = 0.5f;      // voxel.trace_scale: cone-trace resolution / output resolution
+    float maxDistance = 0.0f;     // voxel.max_distance: metres; 0 = edge of the coarsest level
+    float extent = 0.0f;          // voxel.extent: finest level edge (m); 0 = from the scene
+    float coneAngle = 45.0f;      // voxel.cone_angle: full aperture of each diffuse cone, degrees
+    float stepFactor = 1.0f;      // voxel.step: sample spacing in cone diameters (thesis: 1)
+    bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
+    bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
+    int debugLevel = 0;           // voxel.debug_level: cascade level shown by debug views
+    bool operator==(const VoxelSettings&) const = default;
+};
+
+// The Embree ground-truth renderer (src/reference/); see ReferenceRenderer.h.
+struct ReferenceSettings {
+    int spp = 64;                 // reference.spp: paths per pixel, jittered over the pixel square
+    int bounces = 1;              // reference.bounces: indirect bounces (1 = direct + one bounce)
+    int seed = 1;                 // reference.seed: seeds every pixel's random sequence
+    int threads = 0;              // reference.threads: worker threads, 0 = all cores
+    bool operator==(const ReferenceSettings&) const = default;
+};
+
+struct Settings {
+    // Rendering.
+    int supersample = 1;        // render.supersample: pixels averaged per output pixel per axis
+    int frames = 1;             // render.frames: frames rendered; timings are their median
+    int warmupFrames = 0;       // render.warmup: frames rendered and discarded before timing
+    bool glDebug = false;       // gl.debug: KHR_debug messages to stderr
+    // Materials (Blinn-Phong; the specular term is extra to the Lambertian reference).
+    float specular = 0.04f;     // material.specular: ks, 0 switches the specular term off
+    float shininess = 64.0f;    // material.shininess: Blinn-Phong exponent n
+    ShadowSettings shadow;
+    VoxelSettings voxel;
+    ReferenceSettings reference;
+    // Viewer.
+    bool screenshotUi = false;  // view.screenshot_ui (hidden): --screenshot includes the overlay
+};
+
+struct SettingSpec {
+    std::string key;
+    std::string help;
+    std::function<std::string(const Settings&)> get;
+    // Parses and range-checks `value`; on failure writes why (without the key) and returns false.
+    std::function<bool(Settings&, const std::string&, std::string&)> set;
+    bool hidden = false;   // accepted by --set but left out of --help (developer switches)
+};
+
+[[nodiscard]] const std::vector<SettingSpec>& settingSpecs();
+
+// Applies "key=value". Errors name the key and the accepted range.
+[[nodiscard]] bool applySetting(Settings& settings, const std::string& assignment,
+        std::string& error);
+
+// "key  default  help" lines for --help, aligned.
+[[nodiscard]] std::string settingsHelp();
+
+} // namespace gi

@@ -1,0 +1,182 @@
+#include "render/ShadowPass.h"
+
+#include "gl/Shared.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace gi::render {
+namespace {
+
+struct BoundingSphere {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+};
+
+BoundingSphere sphereOf(const scene::Aabb& bounds) {
+    if (bounds.empty()) return {};
+    return {bounds.center(), std::max(0.5f * glm::length(bounds.size()), 1e-6f)};
+}
+
+// Farthest the scene reaches from a point: the far plane of maps centred there.
+float farthestFrom(const glm::vec3& p, const scene::Aabb& bounds) {
+    if (bounds.empty()) return 1.0f;
+    float farthest = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x,
+                (i & 2) ? bounds.max.y : bounds.min.y, (i & 4) ? bounds.max.z : bounds.min.z);
+        farthest = std::max(farthest, glm::length(corner - p));
+    }
+    return std::max(farthest * 1.01f, 1e-5f);
+}
+
+glm::vec3 anyPerpendicularUp(const glm::vec3& direction) {
+    return std::abs(direction.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+gl::Texture createShadowArray(GLenum target, int resolution, int layers, const char* label) {
+    gl::Texture texture = target == GL_TEXTURE_CUBE_MAP_ARRAY
+            ? gl::createTextureCubeArray(GL_DEPTH_COMPONENT32F, resolution, std::max(layers, 1), label)
+            : gl::createTexture2DArray(GL_DEPTH_COMPONENT32F, {resolution, resolution},
+                      std::max(layers, 1), label);
+    glTextureParameteri(texture.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+} // namespace
+
+bool ShadowPass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mProgram = shaders.build({"render/shadow",
+            {{GL_VERTEX_SHADER, "render/shadow.vert"}, {GL_FRAGMENT_SHADER, "render/shadow.frag"}},
+            {}}, error);
+    mFramebuffer = gl::createFramebuffer("render/shadow");
+    return bool(mProgram);
+}
+
+void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene::Aabb& bounds,
+        const ShadowSettings& settings) {
+    mViews.clear();
+    std::vector<shader::GpuShadow> table(std::max<std::size_t>(lights.size(), 1));
+    int layers2D = 0, layersCube = 0;
+    const float resolution = float(settings.resolution);
+    const BoundingSphere sphere = sphereOf(bounds);
+    for (std::size_t i = 0; i < lights.size() && settings.enabled; ++i) {
+        const scene::Light& light = lights[i];
+        shader::GpuShadow& s = table[i];
+        s.bias = glm::vec4(settings.normalOffset, settings.pcfRadius, 0.0f, 0.0f);
+        if (light.type == scene::LightType::Point) {
+            const float far = farthestFrom(light.position, bounds);
+            const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, far * 1e-4f, far);
+            // Cube-map face order and up vectors of the GL specification (table 8.19).
+            static const std::array<std::pair<glm::vec3, glm::vec3>, 6> faces = {{
+                    {{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+                    {{0, -1, 0}, {0, 0, -1}}, {{0, 0, 1}, {0, -1, 0}}, {{0, 0, -1}, {0, -1, 0}}}};
+            for (int face = 0; face < 6; ++face) {
+                const glm::mat4 view = glm::lookAt(light.position,
+                        light.position + faces[std::size_t(face)].first, faces[std::size_t(face)].second);
+                mViews.push_back({projection * view, glm::vec4(light.position, far),
+                        layersCube * 6 + face, true});
+            }
+            s.params = glm::vec4(SHADOW_CUBE, float(layersCube), far, 2.0f / resolution);
+            ++layersCube;
+        } else if (light.type == scene::LightType::Spot) {
+            const float far = farthestFrom(light.position, bounds);
+            const float fov = std::min(2.0f * light.outerConeAngle + glm::radians(2.0f), glm::radians(170.0f));
+            const glm::mat4 projection = glm::perspective(fov, 1.0f, far * 1e-4f, far);
+            const glm::mat4 view = glm::lookAt(light.position, light.position + light.direction,
+                    anyPerpendicularUp(light.direction));
+            s.worldToShadow = projection * view;
+            mViews.push_back({s.worldToShadow, glm::vec4(0.0f), layers2D, false});
+            s.params = glm::vec4(SHADOW_2D, float(layers2D), far, 2.0f * std::tan(0.5f * fov) / resolution);
+            ++layers2D;
+        } else {
+            const glm::vec3 eye = sphere.center - light.direction * (2.0f * sphere.radius);
+            const glm::mat4 view = glm::lookAt(eye, sphere.center, anyPerpendicularUp(light.direction));
+            const float r = sphere.radius;
+            const glm::mat4 projection = glm::ortho(-r, r, -r, r, 0.0f, 4.0f * r);
+            s.worldToShadow = projection * view;
+            mViews.push_back({s.worldToShadow, glm::vec4(0.0f), layers2D, false});
+            s.params = glm::vec4(SHADOW_2D, float(layers2D), 4.0f * r, 2.0f * r / resolution);
+            s.bias.z = 1.0f;
+            ++layers2D;
+        }
+    }
+    // Unused kinds get a 1x1 map: the shader's samplers must always be complete.
+    const int res2D = layers2D > 0 ? settings.resolution : 1;
+    const int resCube = layersCube > 0 ? settings.resolution : 1;
+    if (!mMaps2D || layers2D != mLayers2D || res2D != mResolution || layersCube != mLayersCube) {
+        mMaps2D = createShadowArray(GL_TEXTURE_2D_ARRAY, res2D, layers2D, "render/shadow/maps_2d");
+        mMapsCube = createShadowArray(GL_TEXTURE_CUBE_MAP_ARRAY, resCube, layersCube, "render/shadow/maps_cube");
+    }
+    mLayers2D = layers2D;
+    mLayersCube = layersCube;
+    mResolution = settings.resolution;
+    mShadowTable = gl::createBuffer(table.size() * sizeof(shader::GpuShadow), table.data(), 0,
+            "render/shadow/table");
+    mDirty = true;
+}
+
+void ShadowPass::execute(const scene::GpuScene& scene, gl::GpuProfiler& profiler) {
+    if (!mDirty) return;
+    mDirty = false;
+    if (mViews.empty()) return;
+    gl::GpuScope scope(profiler, "render/shadow");
+    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glNamedFramebufferDrawBuffer(mFramebuffer.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(mFramebuffer.id(), GL_NONE);
+    glViewport(0, 0, mResolution, mResolution);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(mProgram.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, scene.materialBuffer().id());
+    for (const View& view : mViews) {
+        glNamedFramebufferTextureLayer(mFramebuffer.id(), GL_DEPTH_ATTACHMENT,
+                view.cube ? mMapsCube.id() : mMaps2D.id(), 0, view.layer);
+        const float clearDepth = 1.0f;
+        glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
+        // Slope-scaled offset for hardware depth; cube faces write their own depth and are
+        // biased by the normal offset at lookup instead.
+        if (view.cube) glDisable(GL_POLYGON_OFFSET_FILL);
+        else {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(2.0f, 4.0f);
+        }
+        glProgramUniformMatrix4fv(mProgram.id(), LOC_SHADOW_VIEW_PROJECTION, 1, GL_FALSE,
+                &view.viewProjection[0][0]);
+        glProgramUniform4fv(mProgram.id(), LOC_SHADOW_LIGHT_POSITION, 1, &view.lightPositionAndFar[0]);
+        // Both faces cast: single-sided walls seen from behind still block light.
+        scene.drawAll(mProgram.id(), false);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ShadowPass::bind() const {
+    glBindTextureUnit(BIND_TEX_SHADOW_2D, mMaps2D.id());
+    glBindTextureUnit(BIND_TEX_SHADOW_CUBE, mMapsCube.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SHADOWS, mShadowTable.id());
+}
+
+std::vector<gl::MemoryItem> ShadowPass::memory() const {
+    const int res2D = mLayers2D > 0 ? mResolution : 1;
+    const int resCube = mLayersCube > 0 ? mResolution : 1;
+    return {{"render/shadow/maps_2d",
+                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {res2D, res2D, std::max(mLayers2D, 1)}, 1)},
+            {"render/shadow/maps_cube",
+                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {resCube, resCube, 6 * std::max(mLayersCube, 1)}, 1)}};
+}
+
+} // namespace gi::render

@@ -1,0 +1,174 @@
+#include "scene/GpuScene.h"
+
+#include "gl/Shared.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace gi::scene {
+namespace {
+
+constexpr glm::vec4 kDefaultBaseColor{0.8f, 0.8f, 0.8f, 1.0f};
+
+} // namespace
+
+GpuScene::GpuScene(const Scene& scene) : mBounds(scene.bounds) {
+    uploadGeometry(scene);
+    uploadMaterials(scene);
+    setLights(scene.lights);
+}
+
+void GpuScene::uploadGeometry(const Scene& scene) {
+    std::vector<SceneVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    vertices.reserve(scene.vertexCount());
+    indices.reserve(scene.triangleCount() * 3);
+    const int defaultMaterial = int(scene.materials.size());
+    for (const Instance& instance : scene.instances) {
+        const Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.worldFromLocal)));
+        const auto base = std::uint32_t(vertices.size());
+        for (std::size_t i = 0; i < primitive.positions.size(); ++i) {
+            SceneVertex v{};
+            const glm::vec3 p = glm::vec3(instance.worldFromLocal * glm::vec4(primitive.positions[i], 1.0f));
+            glm::vec3 n = normalMatrix * primitive.normals[i];
+            const float length = glm::length(n);
+            n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+            const glm::vec2 uv0 = i < primitive.texcoords0.size() ? primitive.texcoords0[i] : glm::vec2(0.0f);
+            const glm::vec2 uv1 = i < primitive.texcoords1.size() ? primitive.texcoords1[i] : glm::vec2(0.0f);
+            const glm::vec4 c = i < primitive.colors.size() ? primitive.colors[i] : glm::vec4(1.0f);
+            std::copy_n(&p.x, 3, v.position);
+            std::copy_n(&n.x, 3, v.normal);
+            std::copy_n(&uv0.x, 2, v.texcoord0);
+            std::copy_n(&uv1.x, 2, v.texcoord1);
+            std::copy_n(&c.x, 4, v.color);
+            vertices.push_back(v);
+        }
+        Draw draw;
+        draw.firstIndex = std::uint32_t(indices.size());
+        draw.indexCount = std::uint32_t(primitive.indices.size());
+        draw.material = primitive.material >= 0 ? primitive.material : defaultMaterial;
+        if (primitive.material >= 0) {
+            const Material& material = scene.materials[std::size_t(primitive.material)];
+            draw.doubleSided = material.doubleSided;
+            draw.alphaMasked = material.alphaMode == AlphaMode::Mask;
+        }
+        // A mirroring transform turns counter-clockwise local triangles clockwise in world
+        // space; swapping two corners keeps every world-space front face counter-clockwise.
+        for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
+            const std::uint32_t a = primitive.indices[t], b = primitive.indices[t + 1],
+                                c = primitive.indices[t + 2];
+            indices.push_back(base + a);
+            indices.push_back(base + (instance.flipWinding ? c : b));
+            indices.push_back(base + (instance.flipWinding ? b : c));
+        }
+        if (draw.indexCount > 0) mDraws.push_back(draw);
+    }
+    mVertexBytes = vertices.size() * sizeof(SceneVertex);
+    mIndexBytes = indices.size() * sizeof(std::uint32_t);
+    mVertices = gl::createBuffer(mVertexBytes, vertices.data(), 0, "scene/vertices");
+    mIndices = gl::createBuffer(mIndexBytes, indices.data(), 0, "scene/indices");
+
+    mVertexArray = gl::createVertexArray("scene/vertex_array");
+    const GLuint vao = mVertexArray.id();
+    glVertexArrayVertexBuffer(vao, 0, mVertices.id(), 0, sizeof(SceneVertex));
+    glVertexArrayElementBuffer(vao, mIndices.id());
+    auto attribute = [vao](GLuint location, int components, std::size_t offset) {
+        glEnableVertexArrayAttrib(vao, location);
+        glVertexArrayAttribFormat(vao, location, components, GL_FLOAT, GL_FALSE, GLuint(offset));
+        glVertexArrayAttribBinding(vao, location, 0);
+    };
+    attribute(ATTR_POSITION, 3, offsetof(SceneVertex, position));
+    attribute(ATTR_NORMAL, 3, offsetof(SceneVertex, normal));
+    attribute(ATTR_TEXCOORD0, 2, offsetof(SceneVertex, texcoord0));
+    attribute(ATTR_TEXCOORD1, 2, offsetof(SceneVertex, texcoord1));
+    attribute(ATTR_COLOR, 4, offsetof(SceneVertex, color));
+}
+
+void GpuScene::uploadMaterials(const Scene& scene) {
+    for (const Texture& texture : scene.textures) {
+        const int levels = gl::fullMipCount(std::max(texture.width, texture.height));
+        gl::Texture gpu = gl::createTexture2D(texture.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
+                {texture.width, texture.height}, levels, ("scene/texture/" + texture.name).c_str());
+        glTextureSubImage2D(gpu.id(), 0, 0, 0, texture.width, texture.height, GL_RGBA,
+                GL_UNSIGNED_BYTE, texture.rgba8.data());
+        glGenerateTextureMipmap(gpu.id());
+        glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_S, texture.wrapS);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_T, texture.wrapT);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(gpu.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        mTextureBytes += gl::textureBytes(GL_RGBA8, {texture.width, texture.height, 1}, levels);
+        mTextures.push_back(std::move(gpu));
+    }
+    mWhite = gl::createTexture2D(GL_RGBA8, {1, 1}, 1, "scene/white");
+    const std::uint8_t white[4] = {255, 255, 255, 255};
+    glTextureSubImage2D(mWhite.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+
+    std::vector<shader::GpuMaterial> table;
+    for (const Material& m : scene.materials) {
+        shader::GpuMaterial g{};
+        g.baseColorFactor = m.baseColorFactor;
+        g.emissiveAndCutoff = glm::vec4(m.emissiveFactor, m.alphaCutoff);
+        g.flags = glm::ivec4(m.baseColorTexture >= 0, m.emissiveTexture >= 0,
+                m.alphaMode == AlphaMode::Mask ? ALPHA_MASK : ALPHA_OPAQUE,
+                m.baseColorTexCoord);
+        table.push_back(g);
+        mBaseColorTexture.push_back(m.baseColorTexture);
+        mEmissiveTexture.push_back(m.emissiveTexture);
+    }
+    shader::GpuMaterial fallback{};
+    fallback.baseColorFactor = kDefaultBaseColor;
+    fallback.emissiveAndCutoff = glm::vec4(0.0f, 0.0f, 0.0f, 0.5f);
+    table.push_back(fallback);
+    mBaseColorTexture.push_back(-1);
+    mEmissiveTexture.push_back(-1);
+    mMaterials = gl::createBuffer(table.size() * sizeof(shader::GpuMaterial), table.data(), 0,
+            "scene/materials");
+}
+
+void GpuScene::setLights(const std::vector<Light>& lights) {
+    std::vector<shader::GpuLight> table;
+    for (const Light& light : lights) {
+        shader::GpuLight g{};
+        const int type = light.type == LightType::Point ? LIGHT_POINT
+                         : light.type == LightType::Spot ? LIGHT_SPOT
+                                                                : LIGHT_DIRECTIONAL;
+        g.positionAndType = glm::vec4(light.position, float(type));
+        g.directionAndRange = glm::vec4(glm::normalize(light.direction), light.range);
+        g.radiantIntensity = glm::vec4(light.color * light.intensity, 0.0f);
+        g.spotCone = glm::vec4(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle), 0.0f, 0.0f);
+        table.push_back(g);
+    }
+    mLightCount = int(table.size());
+    mLights = gl::createBuffer(std::max<std::size_t>(table.size(), 1) * sizeof(shader::GpuLight),
+            table.empty() ? nullptr : table.data(), 0, "scene/lights");
+}
+
+void GpuScene::drawAll(GLuint program, bool cullBackFaces) const {
+    glBindVertexArray(mVertexArray.id());
+    glBindSampler(BIND_TEX_BASE_COLOR, 0);
+    glBindSampler(BIND_TEX_EMISSIVE, 0);
+    for (const Draw& draw : mDraws) {
+        if (cullBackFaces && !draw.doubleSided) glEnable(GL_CULL_FACE);
+        else glDisable(GL_CULL_FACE);
+        const int baseColor = mBaseColorTexture[std::size_t(draw.material)];
+        const int emissive = mEmissiveTexture[std::size_t(draw.material)];
+        glBindTextureUnit(BIND_TEX_BASE_COLOR,
+                baseColor >= 0 ? mTextures[std::size_t(baseColor)].id() : mWhite.id());
+        glBindTextureUnit(BIND_TEX_EMISSIVE,
+                emissive >= 0 ? mTextures[std::size_t(emissive)].id() : mWhite.id());
+        glProgramUniform1i(program, LOC_DRAW_MATERIAL, draw.material);
+        glDrawElements(GL_TRIANGLES, GLsizei(draw.indexCount), GL_UNSIGNED_INT,
+                reinterpret_cast<const void*>(std::size_t(draw.firstIndex) * sizeof(std::uint32_t)));
+    }
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(0);
+}
+
+std::vector<gl::MemoryItem> GpuScene::memory() const {
+    return {{"scene/vertices", mVertexBytes}, {"scene/indices", mIndexBytes},
+            {"scene/textures", mTextureBytes}};
+}
+
+} // namespace gi::scene

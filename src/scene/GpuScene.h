@@ -1,0 +1,65 @@
+// The scene on the GPU, shared by every pass that draws geometry: one world-space vertex
+// buffer and one index buffer for all instances (passes need world positions, and one buffer
+// keeps each pass to a single vertex array), a material table and a light table in storage
+// buffers, and one sRGB texture per scene texture. Draws are grouped per instance so each
+// pass binds its own textures and material index per draw.
+#pragma once
+
+#include "gl/Handle.h"
+#include "gl/Objects.h"
+#include "scene/Scene.h"
+
+#include <vector>
+
+namespace gi::scene {
+
+struct SceneVertex {             // interleaved, 56 bytes
+    float position[3];           // world space, metres
+    float normal[3];             // world space, unit
+    float texcoord0[2];
+    float texcoord1[2];
+    float color[4];              // linear RGBA
+};
+
+class GpuScene {
+public:
+    struct Draw {
+        std::uint32_t firstIndex = 0;   // into the index buffer
+        std::uint32_t indexCount = 0;
+        int material = 0;               // into the material table (a default material is last)
+        bool doubleSided = false;
+        bool alphaMasked = false;
+    };
+
+    explicit GpuScene(const Scene& scene);
+
+    // Replaces the light table (lights may come from the scene and the command line).
+    void setLights(const std::vector<Light>& lights);
+
+    // Issues every draw with the current program; binds base-colour and emissive textures
+    // and sets LOC_DRAW_MATERIAL per draw. `cullBackFaces` culls single-sided draws only.
+    void drawAll(GLuint program, bool cullBackFaces) const;
+
+    const gl::Buffer& lightBuffer() const { return mLights; }
+    const gl::Buffer& materialBuffer() const { return mMaterials; }
+    int lightCount() const { return mLightCount; }
+    const Aabb& bounds() const { return mBounds; }
+    std::vector<gl::MemoryItem> memory() const;
+
+private:
+    void uploadGeometry(const Scene& scene);
+    void uploadMaterials(const Scene& scene);
+
+    gl::Buffer mVertices, mIndices, mMaterials, mLights;
+    gl::VertexArray mVertexArray;
+    std::vector<gl::Texture> mTextures;
+    gl::Texture mWhite;                  // bound where a material has no texture
+    gl::Sampler mSampler;
+    std::vector<Draw> mDraws;
+    std::vector<int> mBaseColorTexture, mEmissiveTexture;   // per material, -1 = none
+    std::size_t mVertexBytes = 0, mIndexBytes = 0, mTextureBytes = 0;
+    int mLightCount = 0;
+    Aabb mBounds;
+};
+
+} // namespace gi::scene

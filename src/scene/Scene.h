@@ -1,0 +1,130 @@
+// The in-memory scene every pass and the reference renderer read: triangle meshes with their
+// node transforms, Lambertian/Blinn-Phong materials, textures, punctual lights and cameras,
+// in glTF units (metres; light colour x intensity per KHR_lights_punctual, see DESIGN.md).
+// The loader fills it and validates everything passes rely on, so passes never re-check.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace gi::scene {
+
+struct Aabb {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+    bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+    void extend(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Aabb& other) {
+        if (!other.empty()) {
+            extend(other.min);
+            extend(other.max);
+        }
+    }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    glm::vec3 size() const { return empty() ? glm::vec3(0.0f) : max - min; }
+};
+
+// Decoded texture pixels, always RGBA8. Colour textures are stored as authored (sRGB
+// encoded); the GPU decodes them through an SRGB8_ALPHA8 format, the CPU with srgbToLinear.
+struct Texture {
+    std::string name;
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba8;  // width * height * 4 bytes, rows top to bottom
+    bool srgb = true;                 // base colour and emissive textures are sRGB
+    int wrapS = 10497, wrapT = 10497; // GL wrap enums from the glTF sampler (REPEAT default)
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};     // linear RGBA
+    int baseColorTexture = -1;           // index into Scene::textures, or -1
+    int baseColorTexCoord = 0;           // which TEXCOORD_n the texture uses (0 or 1)
+    glm::vec3 emissiveFactor{0.0f};      // linear radiance scale (glTF emissive), already
+                                         // multiplied by KHR_materials_emissive_strength
+    int emissiveTexture = -1;
+    int emissiveTexCoord = 0;            // which TEXCOORD_n the emissive texture uses (0 or 1)
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;            // MASK: texels with alpha below this are cut out
+    bool doubleSided = false;
+};
+
+// One glTF primitive in its mesh's local space, converted to an indexed triangle list.
+struct Primitive {
+    std::vector<glm::vec3> positions;    // metres, local space
+    std::vector<glm::vec3> normals;      // unit length; generated when the file has none
+    std::vector<glm::vec2> texcoords0;   // empty when absent, unless the material samples a
+    std::vector<glm::vec2> texcoords1;   // texture through it (then zero-filled, with a warning)
+    std::vector<glm::vec4> colors;       // COLOR_0 as linear RGBA; empty when absent
+    std::vector<std::uint32_t> indices;  // 3 per triangle, each < positions.size(); front
+                                         // faces counter-clockwise in the world space of every
+                                         // instance that uses this primitive (see Instance)
+    int material = -1;                   // index into Scene::materials, or -1 (default white)
+    Aabb localBounds;
+};
+
+// A primitive placed in the world by a node.
+// Mirroring transforms (det(worldFromLocal) < 0, e.g. one negative scale) turn counter-clockwise
+// triangles clockwise. The loader handles this once: such an instance points at its own copy of
+// the primitive whose triangles have two corners swapped, so every triangle of every instance is
+// counter-clockwise in world space. flipWinding only records that this happened; passes must
+// NOT swap corners again (normals are fine: transform them with the inverse transpose).
+struct Instance {
+    int primitive = 0;                   // index into Scene::primitives
+    int node = -1;                       // glTF node index that placed it
+    glm::mat4 worldFromLocal{1.0f};
+    bool flipWinding = false;            // det(worldFromLocal) < 0; indices already reversed
+};
+
+enum class LightType { Point, Spot, Directional };
+
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::vec3 position{0.0f};            // world space, metres (point, spot)
+    glm::vec3 direction{0.0f, 0.0f, -1.0f}; // world space unit vector the light travels along
+    glm::vec3 color{1.0f};               // linear RGB
+    float intensity = 1.0f;              // W/sr-like radiant intensity (point, spot);
+                                         // irradiance (directional); colour x intensity
+    float range = 0.0f;                  // 0 = infinite; never attenuates (DESIGN.md)
+    float innerConeAngle = 0.0f;         // radians (spot)
+    float outerConeAngle = 0.7853982f;   // radians (spot)
+    bool isDefault = false;              // added because the scene had no lights
+};
+
+struct Camera {
+    std::string name;
+    glm::mat4 worldFromCamera{1.0f};     // camera looks down its local -Z, +Y up
+    float yfov = 0.8f;                   // vertical field of view, radians
+    float znear = 0.01f;
+    float zfar = 0.0f;                   // 0 = derived from the scene bounds
+    bool isDefault = false;              // added because the scene had no camera
+};
+
+struct Scene {
+    std::string sourcePath;
+    std::vector<Primitive> primitives;
+    std::vector<Instance> instances;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+    Aabb bounds;                         // world-space bounds of all instances
+
+    std::size_t triangleCount() const;   // over all instances
+    std::size_t vertexCount() const;     // over all instances
+};
+
+// sRGB electro-optical transfer function (IEC 61966-2-1), 8-bit code to linear.
+float srgbToLinear(float encoded);
+float linearToSrgb(float linear);
+
+} // namespace gi::scene

@@ -1,0 +1,167 @@
+// `voxatlas render` as users and CI run it: outputs, providers, and clean refusals of bad
+// input (exit 2, one line naming what is wrong, no output file left behind).
+#include "ImageCompare.h"
+#include "Process.h"
+
+#include "render/ImageIO.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+namespace gi::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kCornell = std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box.gltf";
+
+int lineCount(const std::string& text) {
+    return int(std::count(text.begin(), text.end(), '\n'));
+}
+
+// A refusal is exactly one line on stderr, exit status 2, and no output file.
+void expectCleanRefusal(const ProcessResult& r, const std::string& mentions,
+        const std::vector<std::string>& mustNotExist) {
+    EXPECT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(mentions), std::string::npos) << "stderr should mention '" << mentions
+                                                       << "': " << r.err;
+    for (const std::string& path : mustNotExist) EXPECT_FALSE(fs::exists(path)) << path;
+}
+
+TEST(RenderCommand, WritesPngHdrAndTimings) {
+    const std::string dir = makeTempDir("render-outputs");
+    const ProcessResult r = runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--hdr",
+            dir + "/a.exr", "--timings", dir + "/t.json", "--width", "96", "--height", "64",
+            "--set", "render.frames=3"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    render::Image png, exr;
+    std::string error;
+    ASSERT_TRUE(render::readPng(dir + "/a.png", png, error)) << error;
+    ASSERT_TRUE(render::readHdr(dir + "/a.exr", exr, error)) << error;
+    EXPECT_EQ(png.width, 96);
+    EXPECT_EQ(png.height, 64);
+    EXPECT_EQ(exr.width, 96);
+    EXPECT_TRUE(render::allFinite(exr));
+    // The PNG is the HDR image encoded: identical after 8-bit sRGB quantisation.
+    const ImageDifference d = compareImages(png, exr, 1);
+    EXPECT_LE(d.maxAbsDiff, 1);
+
+    std::ifstream json(dir + "/t.json");
+    const nlohmann::json timings = nlohmann::json::parse(json);
+    ASSERT_TRUE(timings.contains("passes"));
+    bool sawForward = false;
+    for (const auto& pass : timings["passes"]) {
+        if (pass["name"] == "render/forward") {
+            sawForward = true;
+            EXPECT_EQ(pass["samples"], 3);
+            EXPECT_GT(pass["gpu_ms_median"].get<double>(), 0.0);
+        }
+    }
+    EXPECT_TRUE(sawForward);
+    EXPECT_GT(timings["memory_bytes_total"].get<double>(), 0.0);
+    fs::remove_all(dir);
+}
+
+TEST(RenderCommand, WritesPfm) {
+    const std::string dir = makeTempDir("render-pfm");
+    const ProcessResult r = runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--hdr",
+            dir + "/a.pfm", "--width", "32", "--height", "32"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    render::Image pfm;
+    std::string error;
+    ASSERT_TRUE(render::readHdr(dir + "/a.pfm", pfm, error)) << error;
+    EXPECT_EQ(pfm.width, 32);
+    fs::remove_all(dir);
+}
+
+// The two headless providers are both llvmpipe, so they should agree to the 8-bit tolerance
+// of the golden-image tests (6/255 per channel, at most 0.2% of pixels over it).
+TEST(RenderCommand, EglAndOSMesaAgree) {
+    const std::string dir = makeTempDir("render-providers");
+    for (const char* provider : {"egl", "osmesa"}) {
+        const ProcessResult r = runVoxatlas({"render", kCornell, "--out",
+                dir + "/" + provider + ".png", "--gl", provider, "--width", "128", "--height", "128"});
+        ASSERT_EQ(r.exitCode, 0) << provider << ": " << r.err;
+    }
+    render::Image egl, osmesa;
+    std::string error;
+    ASSERT_TRUE(render::readPng(dir + "/egl.png", egl, error)) << error;
+    ASSERT_TRUE(render::readPng(dir + "/osmesa.png", osmesa, error)) << error;
+    const ImageTolerance tolerance;
+    const ImageDifference d = compareImages(egl, osmesa, tolerance.pixelThreshold);
+    EXPECT_LE(d.failingFraction, tolerance.maxFailingFraction) << "maxAbsDiff " << d.maxAbsDiff;
+    EXPECT_LE(d.meanAbsDiff, tolerance.maxMeanAbsDiff);
+    fs::remove_all(dir);
+}
+
+TEST(RenderCommand, RejectsUnknownOption) {
+    const std::string dir = makeTempDir("render-bad-option");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--frobnicate"}),
+            "--frobnicate", {dir + "/a.png"});
+}
+
+TEST(RenderCommand, RejectsBadSetting) {
+    const std::string dir = makeTempDir("render-bad-set");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--set",
+                               "render.supersample=99"}),
+            "render.supersample", {dir + "/a.png"});
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--set",
+                               "no.such.key=1"}),
+            "no.such.key", {dir + "/a.png"});
+}
+
+TEST(RenderCommand, RejectsMissingScene) {
+    const std::string dir = makeTempDir("render-missing");
+    expectCleanRefusal(runVoxatlas({"render", dir + "/nothere.gltf", "--out", dir + "/a.png"}),
+            "nothere.gltf", {dir + "/a.png"});
+}
+
+TEST(RenderCommand, RejectsUnwritableOutput) {
+    const std::string dir = makeTempDir("render-unwritable");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/no/such/dir/a.png"}),
+            "a.png", {dir + "/no/such/dir/a.png"});
+    // A valid PNG path with an unwritable HDR path must not leave the PNG behind either.
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--hdr",
+                               dir + "/missing/a.exr"}),
+            "a.exr", {dir + "/a.png"});
+}
+
+TEST(RenderCommand, RejectsWrongExtensions) {
+    const std::string dir = makeTempDir("render-extensions");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.jpg"}), ".png",
+            {dir + "/a.jpg"});
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--hdr",
+                               dir + "/a.hdr"}),
+            ".exr", {dir + "/a.png", dir + "/a.hdr"});
+}
+
+TEST(RenderCommand, RejectsCameraOutOfRange) {
+    const std::string dir = makeTempDir("render-camera");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--camera", "7"}),
+            "camera", {dir + "/a.png"});
+}
+
+TEST(RenderCommand, ModesNotBuiltAnswerClearly) {
+    const std::string dir = makeTempDir("render-modes");
+    for (const char* mode : {"voxel", "atlas", "reference"}) {
+        expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", mode}),
+                mode, {dir + "/a.png"});
+    }
+}
+
+TEST(RenderCommand, HelpListsEverySettingWithDefault) {
+    const ProcessResult r = runVoxatlas({"render", "--help"});
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* key : {"render.supersample", "material.specular", "material.shininess"}) {
+        EXPECT_NE(r.out.find(key), std::string::npos) << key;
+    }
+}
+
+} // namespace
+} // namespace gi::test

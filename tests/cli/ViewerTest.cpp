@@ -1,0 +1,231 @@
+// `voxatlas view` in a real GLFW window under Xvfb (xvfb-run): scripted frames, injected
+// hotkeys, screenshots, refusals of bad input, and the headless fallback without a display.
+// Without xvfb-run the window tests skip, unless VOXATLAS_REQUIRE_GPU=1 makes that a failure.
+#include "ImageCompare.h"
+#include "Process.h"
+
+#include "render/ImageIO.h"
+#include "scene/Scene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
+
+namespace gi::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kCornell =
+        std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box.gltf";
+
+// Whole viewer runs on llvmpipe take about a second; the limit is for a hung X server.
+constexpr int kTimeoutSeconds = 120;
+
+int lineCount(const std::string& text) {
+    return int(std::count(text.begin(), text.end(), '\n'));
+}
+
+std::string findProgram(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/bin:/bin";
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
+        if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+        start = end + 1;
+    }
+    return {};
+}
+
+class ViewerTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mXvfbRun = findProgram("xvfb-run");
+        mTimeout = findProgram("timeout");
+        if (mXvfbRun.empty() || mTimeout.empty()) {
+            const char* require = std::getenv("VOXATLAS_REQUIRE_GPU");
+            if (require && std::string(require) == "1") {
+                FAIL() << "xvfb-run and timeout are needed to test the viewer window";
+            }
+            GTEST_SKIP() << "xvfb-run not found (Debian package xvfb): viewer window not tested";
+        }
+    }
+
+    // Runs `voxatlas view ARGS` in `dir` on a private Xvfb server. `timeout` puts the run in
+    // its own process group and kills the whole group (Xvfb included) if it hangs. Each run
+    // asks for its own server number, so parallel test runs do not race for the same one.
+    ProcessResult runView(const std::string& dir, const std::vector<std::string>& args) {
+        static int run = 0;
+        const int server = 100 + int(::getpid() % 400) * 8 + (run++ % 8);
+        std::vector<std::string> command{mTimeout, "--kill-after=5",
+                std::to_string(kTimeoutSeconds - 10), mXvfbRun, "-a", "-n", std::to_string(server),
+                "-s", "-screen 0 1024x768x24",
+                "/usr/bin/env", "-C", dir, VOXATLAS_EXECUTABLE, "view"};
+        command.insert(command.end(), args.begin(), args.end());
+        return runProcess(command, kTimeoutSeconds);
+    }
+
+    std::string mXvfbRun, mTimeout;
+};
+
+// Mean of the sRGB-encoded channels, 0..1; a lit Cornell box is far from black.
+float meanEncoded(const render::Image& image) {
+    double sum = 0.0;
+    for (float v : image.rgb) sum += scene::linearToSrgb(v);
+    return image.rgb.empty() ? 0.0f : float(sum / double(image.rgb.size()));
+}
+
+TEST_F(ViewerTest, ScriptedRunWritesScreenshotOfWindowSize) {
+    const std::string dir = makeTempDir("view-frames");
+    const ProcessResult r = runView(dir, {kCornell, "--frames", "3", "--screenshot", "s.png",
+            "--width", "320", "--height", "240"});
+    ASSERT_FALSE(r.timedOut);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    render::Image image;
+    std::string error;
+    ASSERT_TRUE(render::readPng(dir + "/s.png", image, error)) << error;
+    EXPECT_EQ(image.width, 320);
+    EXPECT_EQ(image.height, 240);
+    // The box's walls and light cover most of the frame: a mean encoded value above 0.05
+    // (13/255) can only come from a rendered scene, not from a cleared or missing frame.
+    EXPECT_GT(meanEncoded(image), 0.05f);
+    fs::remove_all(dir);
+}
+
+TEST_F(ViewerTest, ScreenshotMatchesHeadlessRender) {
+    const std::string dir = makeTempDir("view-vs-render");
+    const ProcessResult view = runView(dir, {kCornell, "--frames", "2", "--screenshot", "v.png",
+            "--width", "160", "--height", "120"});
+    ASSERT_EQ(view.exitCode, 0) << view.err;
+    const ProcessResult render = runVoxatlas({"render", kCornell, "--out", dir + "/r.png",
+            "--width", "160", "--height", "120"}, kTimeoutSeconds);
+    ASSERT_EQ(render.exitCode, 0) << render.err;
+    render::Image v, h;
+    std::string error;
+    ASSERT_TRUE(render::readPng(dir + "/v.png", v, error)) << error;
+    ASSERT_TRUE(render::readPng(dir + "/r.png", h, error)) << error;
+    // Same renderer, camera and size on the same Mesa build; GLX and EGL contexts may differ in
+    // rasterisation details only, so a few edge pixels may move by a step or two.
+    const ImageDifference d = compareImages(v, h, 3);
+    EXPECT_FALSE(d.sizeMismatch);
+    EXPECT_LE(d.failingFraction, 0.002) << "max " << d.maxAbsDiff << " mean " << d.meanAbsDiff;
+    fs::remove_all(dir);
+}
+
+TEST_F(ViewerTest, InjectedHotkeysRun) {
+    const std::string dir = makeTempDir("view-keys");
+    const ProcessResult r = runView(dir, {kCornell, "--frames", "4", "--width", "200",
+            "--height", "150", "--keys", "1:H,2:O,2:V,3:C,3:R"});
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    fs::remove_all(dir);
+}
+
+TEST_F(ViewerTest, UnavailableModeSaysSoAndKeepsRendering) {
+    const std::string dir = makeTempDir("view-modes");
+    const ProcessResult r = runView(dir, {kCornell, "--frames", "3", "--width", "64",
+            "--height", "64", "--keys", "1:2,2:3", "--screenshot", "s.png"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* notice : {"voxel GI is not available in this build yet",
+                 "atlas GI is not available in this build yet"}) {
+        EXPECT_NE(r.err.find(notice), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(fs::exists(dir + "/s.png"));
+    fs::remove_all(dir);
+}
+
+TEST_F(ViewerTest, F12WritesNumberedScreenshot) {
+    const std::string dir = makeTempDir("view-f12");
+    const ProcessResult r = runView(dir, {kCornell, "--frames", "3", "--width", "128",
+            "--height", "96", "--keys", "1:F12,2:F12"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* name : {"voxatlas-1.png", "voxatlas-2.png"}) {
+        render::Image image;
+        std::string error;
+        ASSERT_TRUE(render::readPng(dir + "/" + name, image, error)) << error;
+        EXPECT_EQ(image.width, 128);
+        EXPECT_EQ(image.height, 96);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_F(ViewerTest, EscapeQuitsAndStillSavesTheLastFrame) {
+    const std::string dir = makeTempDir("view-escape");
+    const ProcessResult r = runView(dir, {kCornell, "--frames", "50", "--width", "64",
+            "--height", "64", "--keys", "2:ESCAPE", "--screenshot", "s.png"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/s.png"));
+    fs::remove_all(dir);
+}
+
+// Input is checked before any window opens, so these need no display.
+TEST(ViewerInput, BadScenePathIsOneLineExit2) {
+    const std::string dir = makeTempDir("view-bad-scene");
+    const ProcessResult r = runVoxatlas({"view", dir + "/missing.gltf", "--frames", "1"},
+            kTimeoutSeconds);
+    EXPECT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("missing.gltf"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
+TEST(ViewerInput, UnknownInjectedKeyIsOneLineExit2) {
+    const ProcessResult r = runVoxatlas({"view", kCornell, "--frames", "1", "--keys", "0:NOPE"},
+            kTimeoutSeconds);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("NOPE"), std::string::npos) << r.err;
+}
+
+TEST(ViewerInput, UnwritableScreenshotIsOneLineExit2) {
+    const ProcessResult r = runVoxatlas({"view", kCornell, "--frames", "1", "--screenshot",
+            "/nonexistent-dir/s.png"}, kTimeoutSeconds);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("/nonexistent-dir/s.png"), std::string::npos) << r.err;
+}
+
+// No X server at all: the viewer says why in one line and renders what `voxatlas render` would.
+TEST(ViewerNoDisplay, FallsBackToHeadlessScreenshot) {
+    const std::string dir = makeTempDir("view-no-display");
+    const ProcessResult r = runProcess({"/usr/bin/env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY",
+            "-C", dir, VOXATLAS_EXECUTABLE, "view", kCornell, "--screenshot", "x.png",
+            "--width", "96", "--height", "72"}, kTimeoutSeconds);
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_NE(r.err.find("voxatlas view: no display ("), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("rendering a headless screenshot to x.png instead"), std::string::npos)
+            << r.err;
+    if (r.exitCode == 1 && r.err.find("no OpenGL 4.5 context") != std::string::npos) {
+        GTEST_SKIP() << "no headless OpenGL context either: " << r.err;
+    }
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    render::Image image;
+    std::string error;
+    ASSERT_TRUE(render::readPng(dir + "/x.png", image, error)) << error;
+    EXPECT_EQ(image.width, 96);
+    EXPECT_EQ(image.height, 72);
+    fs::remove_all(dir);
+}
+
+TEST(ViewerNoDisplay, DefaultFallbackFileName) {
+    const std::string dir = makeTempDir("view-no-display-default");
+    const ProcessResult r = runProcess({"/usr/bin/env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY",
+            "-C", dir, VOXATLAS_EXECUTABLE, "view", kCornell, "--width", "32", "--height", "32"},
+            kTimeoutSeconds);
+    if (r.exitCode == 1 && r.err.find("no OpenGL 4.5 context") != std::string::npos) {
+        GTEST_SKIP() << "no headless OpenGL context: " << r.err;
+    }
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("voxatlas-view.png"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/voxatlas-view.png"));
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace gi::test

@@ -1,0 +1,140 @@
+// Shadow maps against geometry: a 0.4 m square occluder 0.5 m above a floor, lit from above
+// by each light type. Floor points whose segment to the light crosses the occluder must be
+// dark; points well outside the shadow must get the unshadowed analytic radiance.
+#include "GpuTest.h"
+
+#include "render/CameraView.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace gi::test {
+namespace {
+
+scene::Primitive square(float halfSize, float y) {
+    scene::Primitive p;
+    p.positions = {{-halfSize, y, -halfSize}, {halfSize, y, -halfSize}, {halfSize, y, halfSize},
+            {-halfSize, y, halfSize}};
+    p.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    p.indices = {0, 2, 1, 0, 3, 2};   // counter-clockwise seen from +Y
+    p.material = 0;
+    for (const glm::vec3& v : p.positions) p.localBounds.extend(v);
+    return p;
+}
+
+scene::Scene occluderScene(const scene::Light& light) {
+    scene::Scene s;
+    scene::Material white;
+    white.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    s.materials.push_back(white);
+    s.primitives.push_back(square(1.0f, 0.0f));
+    s.primitives.push_back(square(0.2f, 0.5f));
+    for (int i = 0; i < 2; ++i) {
+        scene::Instance instance;
+        instance.primitive = i;
+        s.instances.push_back(instance);
+        s.bounds.extend(s.primitives[std::size_t(i)].localBounds);
+    }
+    s.lights.push_back(light);
+    scene::Camera camera;
+    // Straight down from above the light, so the floor fills the view around the occluder.
+    camera.worldFromCamera = glm::inverse(glm::lookAt(glm::vec3(0.0f, 2.4f, 0.001f),
+            glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f)));
+    camera.yfov = glm::radians(50.0f);
+    s.cameras.push_back(camera);
+    return s;
+}
+
+struct ShadowCase {
+    const char* name;
+    scene::Light light;
+    float umbraHalfSize;   // floor square |x - umbraCenterX|, |z| < this is fully occluded
+    float umbraCenterX;
+};
+
+class ShadowGpuTest : public GpuTest, public ::testing::WithParamInterface<ShadowCase> {};
+
+TEST_P(ShadowGpuTest, OccluderCastsItsShadowAndNothingElse) {
+    const ShadowCase& c = GetParam();
+    const scene::Scene s = occluderScene(c.light);
+    constexpr int kSize = 128;
+    RenderRequest request;
+    request.width = request.height = kSize;
+    request.settings.specular = 0.0f;
+    const render::Image image = renderScene(s, request);
+    ASSERT_FALSE(image.empty());
+    const render::CameraView camera = render::cameraFromScene(s.cameras[0], 1.0f, s.bounds);
+
+    int shadowProbes = 0, litProbes = 0;
+    for (int y = 1; y < kSize; y += 3) {
+        for (int x = 1; x < kSize; x += 3) {
+            glm::vec3 p;
+            if (!pixelOnPlaneY(camera, kSize, kSize, x, y, 0.0f, p)) continue;
+            const float fromCenter = std::max(std::abs(p.x), std::abs(p.z));
+            // Points seen through the occluder show the occluder itself, not the floor.
+            const float hiddenByOccluder = 0.2f * 2.4f / (2.4f - 0.5f);
+            if (fromCenter < hiddenByOccluder + 0.03f || fromCenter > 0.95f) continue;
+            const float r = std::max(std::abs(p.x - c.umbraCenterX), std::abs(p.z));
+            const float observed = image.at(x, y).r;
+            if (r < c.umbraHalfSize - 0.05f) {
+                // Deep in the umbra: no direct light at all. 1e-6 is float noise only.
+                EXPECT_LT(observed, 1e-6f) << c.name << ": probe at (" << p.x << ", " << p.z
+                                           << ") should be in shadow";
+                ++shadowProbes;
+            } else if (r > c.umbraHalfSize + 0.05f) {
+                // Outside the penumbra of the PCF kernel (a few shadow texels wide): the
+                // unshadowed value, to 1% (the analytic-plane tolerance).
+                float expected = 0.0f;
+                const float rho = 0.5f;
+                if (c.light.type == scene::LightType::Directional) {
+                    expected = rho / glm::pi<float>() * c.light.intensity * -c.light.direction.y;
+                } else {
+                    const glm::vec3 toLight = c.light.position - p;
+                    const float d2 = glm::dot(toLight, toLight);
+                    expected = rho / glm::pi<float>() * c.light.intensity * (toLight.y / std::sqrt(d2)) / d2;
+                }
+                EXPECT_NEAR(observed, expected, 0.01f * expected)
+                        << c.name << ": probe at (" << p.x << ", " << p.z << ") should be lit";
+                ++litProbes;
+            }
+        }
+    }
+    EXPECT_GT(shadowProbes, 20) << c.name;
+    EXPECT_GT(litProbes, 100) << c.name;
+}
+
+scene::Light pointLight() {
+    scene::Light l;
+    l.type = scene::LightType::Point;
+    l.position = {0.0f, 1.0f, 0.0f};
+    return l;
+}
+
+scene::Light spotLight() {
+    scene::Light l = pointLight();
+    l.type = scene::LightType::Spot;
+    l.direction = {0.0f, -1.0f, 0.0f};
+    l.innerConeAngle = glm::radians(60.0f);   // inner cone covers the whole floor: s = 1
+    l.outerConeAngle = glm::radians(75.0f);
+    return l;
+}
+
+scene::Light directionalLight() {
+    scene::Light l;
+    l.type = scene::LightType::Directional;
+    l.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+    l.intensity = 2.0f;
+    return l;
+}
+
+// Point and spot at 1 m: the 0.2 m half-size occluder at 0.5 m projects to 0.4 m on the
+// floor. Parallel light at 45 degrees projects it unchanged, shifted 0.5 m along +x, so the
+// shadow shows beside the occluder as seen from above.
+INSTANTIATE_TEST_SUITE_P(LightTypes, ShadowGpuTest,
+        ::testing::Values(ShadowCase{"point", pointLight(), 0.4f, 0.0f},
+                ShadowCase{"spot", spotLight(), 0.4f, 0.0f},
+                ShadowCase{"directional", directionalLight(), 0.2f, 0.5f}),
+        [](const auto& info) { return std::string(info.param.name); });
+
+} // namespace
+} // namespace gi::test

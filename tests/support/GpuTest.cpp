@@ -1,0 +1,98 @@
+#include "GpuTest.h"
+
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "render/CameraView.h"
+#include "scene/GltfLoader.h"
+#include "scene/SceneDefaults.h"
+
+#include <glad/gl.h>
+
+#include <cstdlib>
+
+namespace gi::test {
+
+std::string GpuTest::providerName() {
+    const char* env = std::getenv("VOXATLAS_GL");
+    return env && *env ? env : "egl";
+}
+
+void GpuTest::SetUp() {
+    const auto provider = platform::parseProvider(providerName());
+    ASSERT_TRUE(provider) << "VOXATLAS_GL must be egl or osmesa, not " << providerName();
+    std::string error;
+    mContext = provider == platform::HeadlessProvider::Egl ? platform::createEglContext(error)
+                                                           : platform::createOSMesaContext(error);
+    if (!mContext) {
+        const char* require = std::getenv("VOXATLAS_REQUIRE_GPU");
+        if (require && std::string(require) == "1") {
+            FAIL() << "no " << providerName() << " context: " << error;
+        }
+        GTEST_SKIP() << "no " << providerName() << " OpenGL 4.5 context: " << error;
+    }
+}
+
+void GpuTest::TearDown() {
+    if (mContext) EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "a GL error is pending";
+    mContext.reset();
+}
+
+std::string sourcePath(const std::string& relative) {
+    return std::string(VOXATLAS_DATA_DIR) + "/" + relative;
+}
+
+render::Image renderScene(const RenderRequest& request) {
+    const std::string path = request.scenePath.empty() || request.scenePath[0] == '/'
+                                     ? request.scenePath
+                                     : sourcePath(request.scenePath);
+    scene::Scene scene;
+    std::string error;
+    std::vector<std::string> warnings;
+    if (!scene::loadGltf(path, scene, error, warnings)) {
+        ADD_FAILURE() << error;
+        return {};
+    }
+    scene::addDefaults(scene);
+    return renderScene(scene, request);
+}
+
+render::Image renderScene(const scene::Scene& scene, const RenderRequest& request) {
+    std::string error;
+    if (request.cameraIndex >= int(scene.cameras.size())) {
+        ADD_FAILURE() << "the scene has no camera " << request.cameraIndex;
+        return {};
+    }
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    if (!renderer.init(scene, request.settings, shaders, error)) {
+        ADD_FAILURE() << error;
+        return {};
+    }
+    const render::CameraView camera = render::cameraFromScene(
+            scene.cameras[std::size_t(request.cameraIndex)],
+            float(request.width) / float(request.height), scene.bounds);
+    gl::GpuProfiler profiler;
+    renderer.render(camera, {request.width, request.height}, request.output, profiler);
+    profiler.flush();
+    return renderer.readback();
+}
+
+} // namespace gi::test
+
+namespace gi::test {
+
+bool pixelOnPlaneY(const render::CameraView& camera, int width, int height, int x, int y,
+        float planeY, glm::vec3& point) {
+    const glm::mat4 clipToWorld = glm::inverse(camera.viewProjection());
+    const glm::vec2 ndc((float(x) + 0.5f) / float(width) * 2.0f - 1.0f,
+            1.0f - (float(y) + 0.5f) / float(height) * 2.0f);
+    const glm::vec4 nearPoint = clipToWorld * glm::vec4(ndc, -1.0f, 1.0f);
+    const glm::vec4 farPoint = clipToWorld * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w - glm::vec3(0.0f, planeY, 0.0f);
+    const glm::vec3 b = glm::vec3(farPoint) / farPoint.w - glm::vec3(0.0f, planeY, 0.0f);
+    if (a.y * b.y > 0.0f) return false;
+    point = a + (b - a) * (a.y / (a.y - b.y)) + glm::vec3(0.0f, planeY, 0.0f);
+    return true;
+}
+
+} // namespace gi::test

@@ -1,0 +1,55 @@
+// Base fixture for headless GPU tests: one GL 4.5 core context per test from the provider
+// named by VOXATLAS_GL (egl or osmesa; ctest runs the suite once per provider). Without a
+// context the test is skipped with the reason, unless VOXATLAS_REQUIRE_GPU=1 (CI), which
+// makes it a failure. TearDown asserts that no GL error is pending.
+#pragma once
+
+#include "platform/GlContext.h"
+#include "render/CameraView.h"
+#include "render/FrameRenderer.h"
+#include "render/Image.h"
+#include "render/Settings.h"
+#include "scene/Scene.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace gi::test {
+
+class GpuTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    // The provider under test ("egl" or "osmesa").
+    static std::string providerName();
+
+    std::unique_ptr<platform::GlContext> mContext;
+};
+
+struct RenderRequest {
+    std::string scenePath;            // relative paths are taken from the source tree
+    int width = 64, height = 64;
+    int cameraIndex = 0;
+    render::OutputComponent output = render::OutputComponent::Final;
+    Settings settings;
+};
+
+// Loads, renders and reads back one frame with the current context. Fails the test (and
+// returns an empty image) on any error.
+[[nodiscard]] render::Image renderScene(const RenderRequest& request);
+
+// Renders a scene built in code (lights and cameras as given; no defaults are added).
+[[nodiscard]] render::Image renderScene(const scene::Scene& scene, const RenderRequest& request);
+
+// World-space point seen through the centre of pixel (x, y) on the plane y = planeY, or
+// false if the pixel's ray misses it. Images run top to bottom.
+[[nodiscard]] bool pixelOnPlaneY(const render::CameraView& camera, int width, int height, int x,
+        int y, float planeY, glm::vec3& point);
+
+// Absolute path of a file in the source tree (assets/..., tests/...).
+[[nodiscard]] std::string sourcePath(const std::string& relative);
+
+} // namespace gi::test

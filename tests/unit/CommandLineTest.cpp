@@ -1,0 +1,117 @@
+#include "app/CommandLine.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace gi::app {
+namespace {
+
+std::optional<Config> parse(std::vector<const char*> args, std::string& error) {
+    args.insert(args.begin(), "voxatlas");
+    return parseCommandLine(int(args.size()), args.data(), error);
+}
+
+TEST(CommandLine, DefaultsToViewOfTheCornellBox) {
+    std::string error;
+    const auto config = parse({}, error);
+    ASSERT_TRUE(config) << error;
+    EXPECT_EQ(config->command, Command::View);
+    EXPECT_NE(config->scenePath.find("cornell_box.gltf"), std::string::npos);
+}
+
+TEST(CommandLine, ParsesRender) {
+    std::string error;
+    const auto config = parse({"render", "s.gltf", "--out", "a.png", "--hdr", "a.exr", "--mode",
+                                      "direct", "--output", "indirect", "--width", "320", "--height",
+                                      "200", "--camera", "1", "--gl", "osmesa", "--set",
+                                      "material.specular=0", "--timings", "t.json"},
+            error);
+    ASSERT_TRUE(config) << error;
+    EXPECT_EQ(config->command, Command::Render);
+    EXPECT_EQ(config->scenePath, "s.gltf");
+    EXPECT_EQ(config->output, render::OutputComponent::Indirect);
+    EXPECT_EQ(config->width, 320);
+    EXPECT_EQ(config->height, 200);
+    EXPECT_EQ(config->cameraIndex, 1);
+    EXPECT_EQ(config->gl, platform::HeadlessProvider::OSMesa);
+    EXPECT_TRUE(config->glExplicit);
+    EXPECT_EQ(config->settings.specular, 0.0f);
+    EXPECT_EQ(config->timingsPath, "t.json");
+}
+
+TEST(CommandLine, ParsesCameraSpecAndLights) {
+    std::string error;
+    const auto config = parse({"render", "s.gltf", "--out", "a.png", "--camera",
+                                      "0,1,2,0,1,0,45", "--light", "point:0,1,0:1,1,1:2.5",
+                                      "--light", "dir:0,-1,0:1,0.5,0.25:3", "--light",
+                                      "spot:0,2,0:0,-1,0:1,1,1:10:10,30"},
+            error);
+    ASSERT_TRUE(config) << error;
+    ASSERT_TRUE(config->cameraSpec);
+    EXPECT_EQ(config->cameraSpec->eye, glm::vec3(0, 1, 2));
+    EXPECT_EQ(config->cameraSpec->yfovDegrees, 45.0f);
+    ASSERT_EQ(config->extraLights.size(), 3u);
+    EXPECT_EQ(config->extraLights[0].type, scene::LightType::Point);
+    EXPECT_EQ(config->extraLights[0].intensity, 2.5f);
+    EXPECT_EQ(config->extraLights[1].type, scene::LightType::Directional);
+    EXPECT_EQ(config->extraLights[1].direction, glm::vec3(0, -1, 0));
+    EXPECT_EQ(config->extraLights[2].type, scene::LightType::Spot);
+    EXPECT_NEAR(config->extraLights[2].outerConeAngle, glm::radians(30.0f), 1e-6f);
+}
+
+TEST(CommandLine, ParsesViewScripting) {
+    std::string error;
+    const auto config = parse({"view", "--frames", "5", "--screenshot", "s.png", "--keys", "2:G,4:F12"},
+            error);
+    ASSERT_TRUE(config) << error;
+    EXPECT_EQ(config->frames, 5);
+    ASSERT_EQ(config->keys.size(), 2u);
+    EXPECT_EQ(config->keys[1].frame, 4);
+    EXPECT_EQ(config->keys[1].key, "F12");
+}
+
+struct Rejection {
+    std::vector<const char*> args;
+    const char* mentions;
+};
+
+class CommandLineRejects : public ::testing::TestWithParam<Rejection> {};
+
+TEST_P(CommandLineRejects, WithOneLineNamingTheProblem) {
+    std::string error;
+    EXPECT_FALSE(parse(GetParam().args, error));
+    EXPECT_NE(error.find(GetParam().mentions), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, CommandLineRejects, ::testing::Values(
+        Rejection{{"render", "s.gltf"}, "--out"},
+        Rejection{{"render", "--out", "a.png"}, "SCENE"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--bogus"}, "--bogus"},
+        Rejection{{"render", "s.gltf", "--out"}, "needs a value"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--width", "0"}, "--width"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--width", "12x"}, "--width"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--mode", "magic"}, "--mode"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--output", "all"}, "--output"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--gl", "vulkan"}, "--gl"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--camera", "1,2,3"}, "--camera"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--camera", "-1"}, "negative"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--camera", "0,0,0,0,0,0,45"}, "coincide"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "area:1"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "point:0,1,0:1,1,1:-2"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "dir:0,0,0:1,1,1:2"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "spot:0,2,0:0,-1,0:1,1,1:10:40,30"}, "cone"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--set", "x"}, "key=value"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--set", "material.specular=nan"}, "material.specular"},
+        Rejection{{"render", "s.gltf", "--out", "a.tga"}, ".png"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--hdr", "a.hdr"}, ".exr"},
+        Rejection{{"render", "a.gltf", "b.gltf", "--out", "a.png"}, "only one scene"},
+        Rejection{{"view", "--frames", "0"}, "--frames"},
+        Rejection{{"view", "--keys", "x:G"}, "--keys"},
+        Rejection{{"view", "--out", "a.png"}, "not an option"},
+        Rejection{{"info"}, "SCENE"}));
+
+} // namespace
+} // namespace gi::app
