@@ -30,11 +30,15 @@
 // Image units (imageLoad/Store/atomics) of the voxel passes.
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
 #define BIND_IMG_VOXEL_NORMAL       1   // rgba16f, running average of normals, w = unused
-#define BIND_IMG_VOXEL_IRRADIANCE   2   // rgba16f, rgb = sum over lights of E, a = light count
-#define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = current light's running mean E
+#define BIND_IMG_VOXEL_IRRADIANCE   2   // rgba16f, rgb = E summed over lights (W/m^2),
+                                        // a = surface area in the voxel / voxel face area
+#define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = flux / voxel face area (INJECT_AREA)
+                                        // or the current light's mean E (INJECT_FRAGMENT)
 #define BIND_IMG_VOXEL_LOCK         4   // r32ui, bit 0 = spinlock, bits 1..31 = fragment count
 
 #define VOXEL_MAX_LEVELS            8
+#define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
+#define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
 
 // Vertex attribute locations of the scene's vertex buffer.
@@ -76,8 +80,12 @@ struct FrameUniforms {                  // std140
     vec4 cameraPosition;                // xyz = world-space eye (m), w = unused
     vec4 shading;                       // x = specular strength ks, y = Blinn-Phong exponent,
                                         // z = 1 to include specular, w = 1 to apply shadows
+    mat4 inverseViewProjection;         // clip -> world, for per-pixel rays
+    vec4 screen;                        // xy = output size (pixels), zw = size of the
+                                        // indirect texture (pixels)
     ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
-                                        // write, zw = unused
+                                        // write, z = 1 if an indirect texture is bound,
+                                        // w = 1 for depth-aware upsampling of it
 };
 
 struct GpuLight {                       // std430
@@ -106,8 +114,14 @@ struct VoxelUniforms {                  // std140
     vec4 traceWeights;                  // x = weight of the central cone, y = weight of each
                                         // ring cone, z = cos of ring angle, w = sin of it
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
-                                        // fragment is discarded, y = 1 for a light view that
-                                        // writes distance (unused), zw = unused
+                                        // fragment is discarded, y = 1 for an orthographic
+                                        // light view, z = the view's pixel footprint (sr on
+                                        // the axis for perspective views, m^2 for
+                                        // orthographic ones), w = debug view (0 albedo,
+                                        // 1 irradiance, 2 normal)
+    vec4 injectionAxis;                 // xyz = unit forward axis of the light view
+    vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
+                                        // pixel area (m^2), zw = unused
     mat4 viewProjection;                // injection: world -> clip of the current light view
     vec4 lightIndex;                    // injection: x = index into GpuLight[], yzw = unused
 };

@@ -8,6 +8,7 @@
 #include "../common/shadows.glsl"
 
 layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
+layout(binding = BIND_TEX_INDIRECT) uniform sampler2D indirectTexture;
 
 in VertexData {
     vec3 position;
@@ -18,6 +19,32 @@ in VertexData {
 } vin;
 
 layout(location = 0) out vec4 outRadiance;
+
+// Indirect irradiance E_ind of this pixel's surface from the GI technique's screen-space
+// texture, which may be smaller than the output. Bilinear (the thesis) or depth-aware: the
+// four nearest texels weighted bilinearly and by how close their view depth is to this
+// pixel's, so light does not bleed across depth edges; empty texels (a = 0) never count.
+vec3 indirectIrradiance(float viewDepth) {
+    vec2 uv = gl_FragCoord.xy / frame.screen.xy;
+    if (frame.counts.w == 0) return texture(indirectTexture, uv).rgb;
+    vec2 p = uv * frame.screen.zw - 0.5;
+    vec2 f = fract(p);
+    ivec2 base = ivec2(floor(p));
+    ivec2 maxTexel = ivec2(frame.screen.zw) - 1;
+    vec3 sum = vec3(0.0);
+    float weightSum = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        ivec2 o = ivec2(i & 1, i >> 1);
+        vec4 t = texelFetch(indirectTexture, clamp(base + o, ivec2(0), maxTexel), 0);
+        if (t.a <= 0.0) continue;
+        float bilinear = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        float relative = abs(t.a - viewDepth) / max(viewDepth, 1e-6);
+        float w = (bilinear + 1e-3) / (1e-3 + relative * relative * 400.0);
+        sum += w * t.rgb;
+        weightSum += w;
+    }
+    return weightSum > 0.0 ? sum / weightSum : texture(indirectTexture, uv).rgb;
+}
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
@@ -44,7 +71,12 @@ void main() {
             radiance += ks * (shininess + 8.0) / (8.0 * PI) * pow(max(dot(n, h), 0.0), shininess) * e;
         }
     }
-    // Without a GI technique the indirect component is zero.
-    if (frame.counts.y == OUTPUT_INDIRECT) radiance = vec3(0.0);
+    vec3 indirect = vec3(0.0);
+    if (frame.counts.z != 0) {
+        float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
+        indirect = baseColor.rgb / PI * indirectIrradiance(viewDepth);
+    }
+    if (frame.counts.y == OUTPUT_INDIRECT) radiance = indirect;
+    else if (frame.counts.y == OUTPUT_FINAL) radiance += indirect;
     outRadiance = vec4(radiance, 1.0);
 }

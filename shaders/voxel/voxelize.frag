@@ -1,5 +1,7 @@
 // Voxelization, fragment stage: averages albedo (with coverage 1) and normal of every
-// fragment into the finest level containing it, under the voxel's spinlock (thesis 4.3.3.1).
+// fragment into the finest level containing it, under the voxel's spinlock (thesis 4.3.3.1),
+// and sums the surface area the fragments stand for (in units of the voxel's face area), so
+// light injection can turn flux into the voxel's mean irradiance.
 #include "voxel_common.glsl"
 
 layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
@@ -11,6 +13,7 @@ layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
 
 layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) coherent uniform image3D voxelAlbedo;
 layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) coherent uniform image3D voxelNormal;
+layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) coherent uniform image3D voxelIrradiance;
 
 layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 
@@ -22,6 +25,8 @@ in VoxelVertex {
     vec4 color;
 } vin;
 
+flat in float projectedCosine;
+
 void main() {
     GpuMaterial m = materials[drawMaterial];
     vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
@@ -30,10 +35,14 @@ void main() {
     if (level < 0) discard;
     ivec3 texel = voxelTexel(vin.position, level);
     vec3 n = normalize(vin.normal);
+    float size = levelVoxelSize(level);
+    float area = voxel.modes.y / max(projectedCosine, 0.577) / (size * size);
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);
-        imageStore(voxelAlbedo, texel, keep * albedo + add * vec4(baseColor.rgb, 1.0));
-        imageStore(voxelNormal, texel, keep * normal + add * vec4(n, 0.0));
+        imageStore(voxelAlbedo, texel, roundToHalf(keep * albedo + add * vec4(baseColor.rgb, 1.0), dither));
+        imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, 0.0), dither));
+        vec4 irradiance = imageLoad(voxelIrradiance, texel);
+        imageStore(voxelIrradiance, texel, roundToHalf(vec4(irradiance.rgb, irradiance.a + area), dither));
     })
 }

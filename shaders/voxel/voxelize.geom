@@ -22,8 +22,13 @@ out VoxelVertex {
     vec4 color;
 } vout;
 
+// |cos| between the face normal and the projection axis: a raster pixel covers
+// pixelArea / projectedCosine of the surface.
+flat out float projectedCosine;
+
 void main() {
     vec3 faceNormal = abs(cross(vin[1].position - vin[0].position, vin[2].position - vin[0].position));
+    float cosine = max(faceNormal.x, max(faceNormal.y, faceNormal.z)) / max(length(faceNormal), 1e-30);
     int coarsest = voxelLevels() - 1;
     vec3 center = levelOrigin(coarsest) + 0.5 * levelExtent(coarsest);
     float halfExtent = 0.5 * levelExtent(coarsest);
@@ -37,6 +42,7 @@ void main() {
         vout.texcoord0 = vin[i].texcoord0;
         vout.texcoord1 = vin[i].texcoord1;
         vout.color = vin[i].color;
+        projectedCosine = cosine;
         EmitVertex();
     }
     EndPrimitive();

@@ -219,13 +219,13 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
             }
         } else if (arg == "--output") {
             if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (*v == "final") config.output = render::OutputComponent::Final;
-            else if (*v == "direct") config.output = render::OutputComponent::Direct;
-            else if (*v == "indirect") config.output = render::OutputComponent::Indirect;
-            else {
-                error = "--output '" + *v + "': expected final, direct or indirect";
+            const auto output = render::parseOutputComponent(*v);
+            if (!output) {
+                error = "--output '" + *v + "': expected final, direct, indirect, voxel-albedo, "
+                        "voxel-irradiance or voxel-normal";
                 return std::nullopt;
             }
+            config.output = *output;
         } else if (arg == "--width" || arg == "--height") {
             if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
             int n = 0;
@@ -315,7 +315,8 @@ std::string usage(Command command) {
     switch (command) {
     case Command::Render:
         return "usage: voxatlas render SCENE --out F.png [--hdr F.exr|F.pfm]\n"
-               "        [--mode direct|voxel|atlas|reference] [--output final|direct|indirect]\n"
+               "        [--mode direct|voxel|atlas|reference]\n"
+               "        [--output final|direct|indirect|voxel-albedo|voxel-irradiance|voxel-normal]\n"
                "        [--width W --height H] [--camera N | --camera ex,ey,ez,tx,ty,tz,fovy_deg]\n"
                "        [--light KIND:...] [--gl egl|osmesa] [--set key=value ...] [--timings F.json]\n"
                "\n"

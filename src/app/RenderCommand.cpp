@@ -19,16 +19,6 @@ int fail(int status, const std::string& message) {
     return status;
 }
 
-const char* modeName(render::GiMode mode) {
-    switch (mode) {
-    case render::GiMode::Direct: return "direct";
-    case render::GiMode::Voxel: return "voxel";
-    case render::GiMode::Atlas: return "atlas";
-    case render::GiMode::Reference: return "reference";
-    }
-    return "?";
-}
-
 } // namespace
 
 int runRender(const Config& config) {
@@ -36,9 +26,9 @@ int runRender(const Config& config) {
     for (const std::string* path : {&config.outPath, &config.hdrPath, &config.timingsPath}) {
         if (!path->empty() && !render::checkWritable(*path, error)) return fail(2, error);
     }
-    if (config.mode != render::GiMode::Direct) {
-        return fail(2, std::string("--mode ") + modeName(config.mode) +
-                " is not available in this build yet (available: direct)");
+    if (config.mode == render::GiMode::Atlas || config.mode == render::GiMode::Reference) {
+        return fail(2, std::string("--mode ") + render::giModeName(config.mode) +
+                " is not available in this build yet (available: direct, voxel)");
     }
 
     scene::Scene scene;
@@ -58,6 +48,7 @@ int runRender(const Config& config) {
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
     if (!renderer.init(scene, config.settings, shaders, error)) return fail(1, error);
+    if (!renderer.setMode(config.mode, error)) return fail(2, error);
 
     gl::GpuProfiler profiler;
     for (int frame = 0; frame < config.settings.warmupFrames; ++frame) {
@@ -87,13 +78,13 @@ int runRender(const Config& config) {
         written.push_back(config.hdrPath);
     }
     if (!config.timingsPath.empty()) {
-        TimingsReport report{config.scenePath, modeName(config.mode), std::string(context->provider()),
+        TimingsReport report{config.scenePath, render::giModeName(config.mode), std::string(context->provider()),
                 context->description(), width, height, config.settings.frames,
                 profiler.timings(), renderer.memory()};
         if (!writeTimingsJson(config.timingsPath, report, error)) return cleanUp(), fail(1, error);
     }
     std::fprintf(stderr, "voxatlas render: wrote %s (%dx%d, %s, %s)\n", config.outPath.c_str(),
-            width, height, modeName(config.mode), std::string(context->provider()).c_str());
+            width, height, render::giModeName(config.mode), std::string(context->provider()).c_str());
     return 0;
 }
 

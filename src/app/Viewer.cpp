@@ -41,18 +41,17 @@ int fail(int status, const std::string& message) {
     return status;
 }
 
-// The GI modes on the number keys. A mode becomes selectable by marking it available here once
-// FrameRenderer renders it; everything else (help text, notice, overlay) follows this table.
+// The GI modes on the number keys; help text, notices and the overlay follow this table. A
+// mode FrameRenderer cannot switch to answers with its reason and the mode stays as it was.
 struct ModeKey {
     const char* key;
     render::GiMode mode;
     const char* name;
-    bool available;
 };
 constexpr std::array kModeKeys = {
-    ModeKey{"1", render::GiMode::Direct, "direct", true},
-    ModeKey{"2", render::GiMode::Voxel, "voxel GI", false},
-    ModeKey{"3", render::GiMode::Atlas, "atlas GI", false},
+    ModeKey{"1", render::GiMode::Direct, "direct"},
+    ModeKey{"2", render::GiMode::Voxel, "voxel GI"},
+    ModeKey{"3", render::GiMode::Atlas, "atlas GI"},
 };
 
 const char* modeName(render::GiMode mode) {
@@ -63,12 +62,7 @@ const char* modeName(render::GiMode mode) {
 }
 
 const char* outputName(render::OutputComponent output) {
-    switch (output) {
-    case render::OutputComponent::Final: return "final";
-    case render::OutputComponent::Direct: return "direct";
-    case render::OutputComponent::Indirect: return "indirect";
-    }
-    return "?";
+    return render::outputComponentName(output);
 }
 
 std::string upper(std::string text) {
@@ -143,7 +137,7 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
     mHotkeys.push_back({"H", "show / hide this help", [this] { mUi.toggleHelp(); }});
     for (const ModeKey& entry : kModeKeys) {
         mHotkeys.push_back({entry.key,
-                std::string(entry.name) + (entry.available ? "" : " (not in this build yet)"),
+                std::string(entry.name),
                 [this, &entry] { selectMode(entry); }});
     }
     mHotkeys.push_back({"O", "output: final / direct / indirect", [this] { cycleOutput(); }});
@@ -174,10 +168,10 @@ void Viewer::notify(const std::string& message) {
 }
 
 void Viewer::selectMode(const ModeKey& entry) {
-    if (!entry.available) {
-        const std::string message = std::string(entry.name) + " is not available in this build yet";
-        notify(message);
-        say(message);
+    std::string error;
+    if (!mRenderer.setMode(entry.mode, error)) {
+        notify(error);
+        say(error);
         return;
     }
     mMode = entry.mode;
@@ -344,7 +338,11 @@ int Viewer::run() {
             (void)writeScreenshot(mRenderer.readback(), path);
         }
         if (mUi.draw(uiFrame(seconds * 1000.0), mSettings, mProfiler)) {
-            mRenderer.setSettings(mSettings);
+            std::string error;
+            if (!mRenderer.setSettings(mSettings, error)) {
+                notify(error);
+                say(error);
+            }
         }
         const bool lastFrame = mConfig.frames > 0 && frame + 1 == mConfig.frames;
         if (lastFrame && mSettings.screenshotUi && !mConfig.screenshotPath.empty()) {

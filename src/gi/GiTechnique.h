@@ -26,6 +26,7 @@ enum class DebugView { None, VoxelAlbedo, VoxelIrradiance, VoxelNormal };
 
 struct GiFrameInputs {
     const scene::GpuScene& scene;          // world-space geometry, materials, lights
+    const std::vector<scene::Light>& lights;   // the same lights on the CPU
     const render::ShadowPass& shadows;     // shadow maps of every light, already rendered
     const gl::Buffer& frameUniforms;       // FrameUniforms of the camera view (std140)
     const render::CameraView& camera;

@@ -46,8 +46,15 @@ void GpuProfiler::resolve(PassRecord& record, QueryPair& pair, bool wait) {
         record.gpuMs.erase(record.gpuMs.begin(), record.gpuMs.begin() + kMaxSamples / 2);
         record.cpuMs.erase(record.cpuMs.begin(), record.cpuMs.begin() + kMaxSamples / 2);
     }
-    record.gpuMs.push_back(double(stop - start) * 1e-6);
-    record.cpuMs.push_back(pair.cpuMs);
+    const double gpuMs = double(stop - start) * 1e-6;
+    if (pair.frame == record.lastResolvedFrame && !record.gpuMs.empty()) {
+        record.gpuMs.back() += gpuMs;
+        record.cpuMs.back() += pair.cpuMs;
+    } else {
+        record.gpuMs.push_back(gpuMs);
+        record.cpuMs.push_back(pair.cpuMs);
+    }
+    record.lastResolvedFrame = pair.frame;
     pair.pending = false;
 }
 
@@ -78,6 +85,7 @@ void GpuProfiler::end(const std::string& name) {
     pair.cpuMs = std::chrono::duration<double, std::milli>(
             std::chrono::steady_clock::now() - record.cpuStart).count();
     pair.pending = true;
+    pair.frame = mFrame;
     record.next = (record.next + 1) % kRingSize;
 }
 
@@ -103,6 +111,7 @@ void GpuProfiler::clearSamples() {
     for (auto& [name, record] : mPasses) {
         record.gpuMs.clear();
         record.cpuMs.clear();
+        record.lastResolvedFrame = -1;
     }
 }
 

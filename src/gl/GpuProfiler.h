@@ -2,7 +2,9 @@
 // debug group named after the pass. Each pass keeps a ring of query pairs that is read only
 // once GL_QUERY_RESULT_AVAILABLE is set, so the frame never waits on the GPU; results feed a
 // 64-frame running average (overlay) and the full sample list (medians for --timings/bench).
-// A scope nested in another is timed too; totals are per pass name, not exclusive.
+// A scope nested in another is timed too; totals are per pass name, not exclusive. A pass
+// that runs several times in one frame (e.g. once per light) yields one sample per frame:
+// the sum of its runs.
 #pragma once
 
 #include "gl/Handle.h"
@@ -25,12 +27,15 @@ struct PassTiming {
 
 class GpuProfiler {
 public:
-    static constexpr int kRingSize = 4;
+    static constexpr int kRingSize = 16;
     static constexpr int kAverageWindow = 64;
 
     GpuProfiler() = default;
     GpuProfiler(const GpuProfiler&) = delete;
     GpuProfiler& operator=(const GpuProfiler&) = delete;
+
+    // Marks the start of a frame; scopes of the same name within one frame are summed.
+    void newFrame() { ++mFrame; }
 
     void begin(const std::string& name);
     void end(const std::string& name);
@@ -50,17 +55,20 @@ private:
         Query start, stop;
         bool pending = false;
         double cpuMs = 0.0;
+        long frame = 0;
     };
     struct PassRecord {
         std::array<QueryPair, kRingSize> ring;
         int next = 0;
         std::chrono::steady_clock::time_point cpuStart;
         std::vector<double> gpuMs, cpuMs;
+        long lastResolvedFrame = -1;
     };
     void resolve(PassRecord& record, QueryPair& pair, bool wait);
 
     std::map<std::string, PassRecord> mPasses;
     std::vector<std::string> mOrder;
+    long mFrame = 0;
 };
 
 // RAII scope: times the enclosed GL commands as pass `name` and labels them as a debug group.

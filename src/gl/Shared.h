@@ -12,9 +12,9 @@ using glm::vec4;
 
 #include "common/shared.h"
 
-static_assert(sizeof(gi::shader::FrameUniforms) == 176, "FrameUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::FrameUniforms) == 256, "FrameUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuLight) == 64, "GpuLight std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuMaterial) == 48, "GpuMaterial std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
-static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 4 + 64 + 16,
+static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 6 + 64 + 16,
         "VoxelUniforms std140 layout drifted");

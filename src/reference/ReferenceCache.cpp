@@ -249,6 +249,7 @@ bool ReferenceCache::load(const std::string& key, ReferenceResult& out) const {
             !readUnsigned(*rays, "primary", result.rays.primary) ||
             !readUnsigned(*rays, "shadow", result.rays.shadow) ||
             !readUnsigned(*rays, "bounce", result.rays.bounce) ||
+            !readUnsigned(*rays, "light", result.rays.light) ||
             !readNumberOrNull(json, "seconds", result.seconds)) {
         return false;
     }
@@ -317,7 +318,7 @@ bool ReferenceCache::store(const std::string& key, const ReferenceResult& result
                               {"final", numberOrNull(result.noise.final)}}},
             {"seconds", numberOrNull(result.seconds)},
             {"rays", {{"primary", result.rays.primary}, {"shadow", result.rays.shadow},
-                             {"bounce", result.rays.bounce}}},
+                             {"bounce", result.rays.bounce}, {"light", result.rays.light}}},
             {"checksums", checksums}};
     const std::string temporary = temporaryName(jsonPath);
     {

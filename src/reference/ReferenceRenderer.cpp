@@ -1,5 +1,6 @@
 #include "reference/ReferenceRenderer.h"
 
+#include "reference/OwenSobol.h"
 #include "reference/Pcg32.h"
 
 #include <embree3/rtcore.h>
@@ -21,10 +22,11 @@ namespace {
 
 constexpr int kTileSize = 16;
 // Ray origins move off a surface along its geometric normal by this fraction of the largest
-// coordinate magnitude of the hit point and its triangle's corners: Embree's single-precision
-// hit test errs by a few ulps of those magnitudes (2^-23 ~ 1.2e-7 each), so 1e-4 leaves a
-// margin of ~800 ulps, and is still far below any feature size in a scene at any scale.
-constexpr float kRelativeOffset = 1e-4f;
+// coordinate magnitude M of the hit point and its triangle's corners. The interpolated hit
+// point and Embree's single-precision plane test both err by a few ulps of M (2^-23 M each),
+// so 2^-17 M = 64 ulps keeps every continuation ray off its own triangle, while moving the
+// origin so little (8e-6 M) that it biases irradiance by far less than the test tolerances.
+constexpr float kRelativeOffset = 1.0f / 131072.0f;
 // A shadow ray towards a point or spot light stops this fraction short of the light, so a
 // light placed exactly on a surface is not shadowed by it.
 constexpr float kShadowRayShortening = 1e-4f;
@@ -329,18 +331,105 @@ bool addGeometry(EmbreeState& state, std::uint32_t first, std::uint32_t count, b
 
 namespace {
 
+// Direction density (per steradian) with which lightSubpathDirection samples a light's
+// emission: uniform over the sphere (point) or over the outer cone (spot). 0 for lights whose
+// emission cannot be sampled (directional, or a spot with a zero-width cone): those are
+// reached by next-event estimation alone.
+float emissionPdf(const scene::Light& light) {
+    if (light.type == scene::LightType::Point) return 1.0f / (4.0f * glm::pi<float>());
+    if (light.type == scene::LightType::Spot) {
+        const float solidAngle = glm::two_pi<float>() *
+                (1.0f - std::cos(std::clamp(light.outerConeAngle, 0.0f, glm::pi<float>())));
+        return solidAngle > 1e-6f ? 1.0f / solidAngle : 0.0f;
+    }
+    return 0.0f;
+}
+
+glm::vec3 lightSubpathDirection(const scene::Light& light, float u1, float u2) {
+    float cosTheta = 1.0f - 2.0f * u1;
+    glm::vec3 axis(0.0f, 0.0f, 1.0f);
+    if (light.type == scene::LightType::Spot) {
+        const float cosOuter = std::cos(std::clamp(light.outerConeAngle, 0.0f, glm::pi<float>()));
+        cosTheta = 1.0f - u1 * (1.0f - cosOuter);
+        axis = glm::normalize(light.direction);
+    }
+    const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    const float phi = glm::two_pi<float>() * u2;
+    glm::vec3 t, b;
+    orthonormalBasis(axis, t, b);
+    return glm::normalize(sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b +
+                          cosTheta * axis);
+}
+
+// How a punctual light reaches point p: wi (unit, towards the light), the shadow-ray length,
+// and E / (colour x intensity x cos(theta)) per DESIGN.md: 1/d^2 (point), s^2/d^2 (spot),
+// 1 (directional). False when the light cannot reach p (on it, or outside a spot's cone).
+bool lightGeometry(const scene::Light& light, const glm::vec3& p, glm::vec3& wi,
+        float& distance, float& factor) {
+    if (light.type == scene::LightType::Directional) {
+        wi = -glm::normalize(light.direction);
+        distance = std::numeric_limits<float>::infinity();
+        factor = 1.0f;
+        return true;
+    }
+    const glm::vec3 toLight = light.position - p;
+    const float distance2 = glm::dot(toLight, toLight);
+    if (!(distance2 > 0.0f) || !std::isfinite(distance2)) return false;
+    distance = std::sqrt(distance2);
+    wi = toLight / distance;
+    factor = 1.0f / distance2;
+    if (light.type == scene::LightType::Spot) {
+        const float cosAlpha = glm::dot(glm::normalize(light.direction), -wi);
+        const float cosOuter = std::cos(light.outerConeAngle);
+        const float cosInner = std::cos(light.innerConeAngle);
+        float s = 0.0f;
+        if (cosInner > cosOuter) {
+            s = std::clamp((cosAlpha - cosOuter) / (cosInner - cosOuter), 0.0f, 1.0f);
+        } else {
+            s = cosAlpha >= cosOuter ? 1.0f : 0.0f;
+        }
+        factor *= s * s;
+    }
+    return factor > 0.0f && std::isfinite(factor);
+}
+
+// The first surface a light's emission hits (a light subpath of one vertex), with what the
+// connection strategy needs: its outgoing radiance due to the light and its area density.
+struct LightVertex {
+    Surface surface;
+    glm::vec3 radiance{0.0f};   // rho/pi x colour x intensity x E-factor x cos at the vertex
+    float pdfArea = 0.0f;       // emissionPdf x |cos_g| / d^2
+    bool valid = false;
+};
+
 // Everything one render() call shares between its worker threads.
+//
+// Light transport: a path x0 (camera hit), x1, ... of length up to `bounces` bounces. Direct
+// light at x0 is next-event estimation (NEE). Light reaching x_j (j >= 1) from a point or spot
+// light, i.e. the paths x_(j-1) -> x_j -> light, is estimated with two strategies combined by
+// multiple importance sampling with the balance heuristic (Veach 1997, ch. 9; PBRT 3rd ed.
+// 14.3 and 16.3): (A) x_j found by cosine sampling at x_(j-1), then NEE at x_j; (B) x_j found
+// as the first hit of a ray sampled from the light's emission (a light vertex), then connected
+// to x_(j-1) with a visibility ray. (A) alone is noisy where a light sits close to a surface
+// (the Cornell box's light is 1 cm under the ceiling: a hot spot a bounce ray rarely finds);
+// (B) handles that, while (A) handles nearby geometry, where (B)'s 1/d^2 diverges. Both
+// weights use area densities at x_j: pA = cos_s(x_(j-1))/pi |cos_g(x_j)| / d^2 and
+// pB = emissionPdf |cos_g(x_j, light)| / d_light^2; each strategy contributes f / (pA + pB).
 class PathTracer {
 public:
     PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
             const render::CameraView& camera, int width, int height, int bounces)
         : mState(state), mLights(lights), mWidth(width), mHeight(height), mBounces(bounces) {
         mClipToWorld = glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
+        for (const scene::Light& light : lights) mEmissionPdf.push_back(emissionPdf(light));
     }
 
-    // One path through continuous pixel coordinates (x, y), x in [0, width) left to right,
-    // y in [0, height) top to bottom.
-    PathSample trace(float x, float y, Pcg32& rng, RayCounts& counts) const {
+    // One path through continuous image coordinates (x, y), x in [0, width) left to right,
+    // y in [0, height) top to bottom. u[0..1]: the first bounce direction, u[2..3]: the first
+    // light's emission direction; everything else comes from `rng`. `lightVertices` is scratch
+    // space reused between calls.
+    PathSample trace(float x, float y, const float u[4], Pcg32& rng,
+            std::vector<LightVertex>& lightVertices, RayCounts& counts) const {
         PathSample result;
         RTCIntersectContext coherent, incoherent;
         rtcInitIntersectContext(&coherent);
@@ -352,22 +441,32 @@ public:
         Surface surface;
         if (!interact(rayHit, surface)) return result;
         result.hit = true;
-        result.direct = surface.emission + directLight(surface, incoherent, counts);
+        result.direct = surface.emission + directLight(surface, -1.0f, incoherent, counts);
+        if (mBounces <= 0) return result;
 
+        sampleLightVertices(u + 2, rng, lightVertices, incoherent, counts);
         glm::vec3 throughput(1.0f);
         for (int bounce = 0; bounce < mBounces; ++bounce) {
+            if (maxComponent(throughput * surface.albedo) <= 0.0f) break;
+            result.indirect += throughput * connect(surface, lightVertices, incoherent, counts);
             throughput *= surface.albedo;
-            if (maxComponent(throughput) <= 0.0f) break;
-            const float u1 = rng.nextFloat();
-            const float u2 = rng.nextFloat();
+            const float u1 = bounce == 0 ? u[0] : rng.nextFloat();
+            const float u2 = bounce == 0 ? u[1] : rng.nextFloat();
             const glm::vec3 direction = sampleCosineHemisphere(surface.shadingNormal, u1, u2);
-            if (glm::dot(direction, surface.geometricNormal) <= 0.0f) break;
-            rayHit = ray(offsetOrigin(surface), direction, std::numeric_limits<float>::infinity());
+            const float cosSampled = glm::dot(direction, surface.shadingNormal);
+            if (glm::dot(direction, surface.geometricNormal) <= 0.0f || cosSampled <= 0.0f) break;
+            const glm::vec3 origin = offsetOrigin(surface);
+            rayHit = ray(origin, direction, std::numeric_limits<float>::infinity());
             ++counts.bounce;
             rtcIntersect1(mState.rtcScene, &incoherent, &rayHit);
             if (!interact(rayHit, surface)) break;
-            result.indirect +=
-                    throughput * (surface.emission + directLight(surface, incoherent, counts));
+            const glm::vec3 step = surface.position - origin;
+            const float distance2 = glm::dot(step, step);
+            const float pdfArea = cosSampled * glm::one_over_pi<float>() *
+                    std::abs(glm::dot(surface.geometricNormal, direction)) /
+                    std::max(distance2, std::numeric_limits<float>::min());
+            result.indirect += throughput *
+                    (surface.emission + directLight(surface, pdfArea, incoherent, counts));
         }
         return result;
     }
@@ -456,54 +555,117 @@ private:
     }
 
     // Outgoing radiance rho/pi x sum over lights of (colour x intensity x E) x visibility, with
-    // E per DESIGN.md "Radiometric conventions".
-    glm::vec3 directLight(const Surface& surface, RTCIntersectContext& context,
+    // E per DESIGN.md "Radiometric conventions". With pdfArea >= 0 (the density of this vertex
+    // under cosine sampling from the previous one), contributions of lights that also have
+    // light vertices carry the MIS weight pA / (pA + pB); with pdfArea < 0 (camera hit) none.
+    glm::vec3 directLight(const Surface& surface, float pdfArea, RTCIntersectContext& context,
             RayCounts& counts) const {
         if (maxComponent(surface.albedo) <= 0.0f) return glm::vec3(0.0f);
         glm::vec3 sum(0.0f);
         const glm::vec3 origin = offsetOrigin(surface);
-        for (const scene::Light& light : mLights) {
+        for (std::size_t i = 0; i < mLights.size(); ++i) {
+            const scene::Light& light = mLights[i];
             const glm::vec3 radiant = light.color * light.intensity;
             if (maxComponent(radiant) <= 0.0f) continue;
             glm::vec3 wi;
-            float geometry = 0.0f;
-            float tfar = std::numeric_limits<float>::infinity();
-            if (light.type == scene::LightType::Directional) {
-                wi = -glm::normalize(light.direction);
-                geometry = 1.0f;
-            } else {
-                const glm::vec3 toLight = light.position - surface.position;
-                const float distance2 = glm::dot(toLight, toLight);
-                if (!(distance2 > 0.0f)) continue;
-                const float distance = std::sqrt(distance2);
-                wi = toLight / distance;
-                geometry = 1.0f / distance2;
-                tfar = glm::length(light.position - origin) * (1.0f - kShadowRayShortening);
-                if (light.type == scene::LightType::Spot) {
-                    const float cosAlpha = glm::dot(glm::normalize(light.direction), -wi);
-                    const float cosOuter = std::cos(light.outerConeAngle);
-                    const float cosInner = std::cos(light.innerConeAngle);
-                    float s = 0.0f;
-                    if (cosInner > cosOuter) {
-                        s = std::clamp((cosAlpha - cosOuter) / (cosInner - cosOuter), 0.0f, 1.0f);
-                    } else {
-                        s = cosAlpha >= cosOuter ? 1.0f : 0.0f;
-                    }
-                    geometry *= s * s;
-                }
-            }
+            float distance = 0.0f, factor = 0.0f;
+            if (!lightGeometry(light, surface.position, wi, distance, factor)) continue;
             const float cosTheta = glm::dot(surface.shadingNormal, wi);
-            if (cosTheta <= 0.0f || glm::dot(surface.geometricNormal, wi) <= 0.0f) continue;
-            geometry *= cosTheta;
-            if (!(geometry > 0.0f) || !std::isfinite(geometry)) continue;
+            const float cosGeometric = glm::dot(surface.geometricNormal, wi);
+            if (cosTheta <= 0.0f || cosGeometric <= 0.0f) continue;
+            float tfar = distance;
+            if (std::isfinite(distance)) {
+                tfar = glm::length(light.position - origin) * (1.0f - kShadowRayShortening);
+            }
             if (occluded(origin, wi, tfar, context, counts)) continue;
-            sum += radiant * geometry;
+            float weight = 1.0f;
+            if (pdfArea >= 0.0f && mEmissionPdf[i] > 0.0f) {
+                const float pdfLight = mEmissionPdf[i] * cosGeometric / (distance * distance);
+                weight = pdfArea / (pdfArea + pdfLight);
+            }
+            sum += radiant * (factor * cosTheta * weight);
         }
         return surface.albedo * glm::one_over_pi<float>() * sum;
     }
 
+    // Samples one light vertex per point or spot light (the first light uses the stratified
+    // numbers u[0..1], the others `rng`).
+    void sampleLightVertices(const float u[2], Pcg32& rng, std::vector<LightVertex>& vertices,
+            RTCIntersectContext& context, RayCounts& counts) const {
+        vertices.resize(mLights.size());
+        for (std::size_t i = 0; i < mLights.size(); ++i) {
+            LightVertex& vertex = vertices[i];
+            vertex.valid = false;
+            const scene::Light& light = mLights[i];
+            if (mEmissionPdf[i] <= 0.0f) continue;
+            const float u1 = i == 0 ? u[0] : rng.nextFloat();
+            const float u2 = i == 0 ? u[1] : rng.nextFloat();
+            const glm::vec3 radiant = light.color * light.intensity;
+            if (maxComponent(radiant) <= 0.0f) continue;
+            const glm::vec3 direction = lightSubpathDirection(light, u1, u2);
+            RTCRayHit rayHit = ray(light.position, direction, std::numeric_limits<float>::infinity());
+            ++counts.light;
+            rtcIntersect1(mState.rtcScene, &context, &rayHit);
+            if (!interact(rayHit, vertex.surface)) continue;
+            const Surface& s = vertex.surface;
+            glm::vec3 wi;
+            float distance = 0.0f, factor = 0.0f;
+            if (maxComponent(s.albedo) <= 0.0f ||
+                    !lightGeometry(light, s.position, wi, distance, factor)) {
+                continue;
+            }
+            const float cosTheta = glm::dot(s.shadingNormal, wi);
+            if (cosTheta <= 0.0f) continue;
+            vertex.radiance = s.albedo * glm::one_over_pi<float>() * radiant * (factor * cosTheta);
+            vertex.pdfArea = mEmissionPdf[i] * std::abs(glm::dot(s.geometricNormal, wi)) /
+                             (distance * distance);
+            vertex.valid = vertex.pdfArea > 0.0f && std::isfinite(vertex.pdfArea);
+        }
+    }
+
+    // Strategy (B): light reflected once at each light vertex y towards x, i.e.
+    // rho_x/pi cos_s(x) |cos_g(y)| / d^2 x L_y x V(x, y) / (pA + pB).
+    glm::vec3 connect(const Surface& x, const std::vector<LightVertex>& vertices,
+            RTCIntersectContext& context, RayCounts& counts) const {
+        glm::vec3 sum(0.0f);
+        for (const LightVertex& vertex : vertices) {
+            if (!vertex.valid) continue;
+            const Surface& y = vertex.surface;
+            const glm::vec3 toY = y.position - x.position;
+            const float distance2 = glm::dot(toY, toY);
+            if (!(distance2 > 0.0f)) continue;
+            const glm::vec3 w = toY / std::sqrt(distance2);
+            const float cosX = glm::dot(x.shadingNormal, w);
+            const float cosY = -glm::dot(y.geometricNormal, w);
+            if (cosX <= 0.0f || glm::dot(x.geometricNormal, w) <= 0.0f || cosY <= 0.0f) continue;
+            const float geometry = cosX * cosY / distance2;
+            const float pdfBsdf = geometry * glm::one_over_pi<float>();
+            if (!visible(x, y, context, counts)) continue;
+            sum += vertex.radiance * (geometry / (pdfBsdf + vertex.pdfArea));
+        }
+        return x.albedo * glm::one_over_pi<float>() * sum;
+    }
+
+    // Whether the segment from x to y is free. A ray arriving at y at a grazing angle may touch
+    // y's own plane a little before y by rounding; hits within that plane count as arriving.
+    bool visible(const Surface& x, const Surface& y, RTCIntersectContext& context,
+            RayCounts& counts) const {
+        const glm::vec3 origin = offsetOrigin(x);
+        const glm::vec3 span = y.position - origin;
+        const float length = glm::length(span);
+        if (!(length > 0.0f)) return false;
+        const glm::vec3 direction = span / length;
+        RTCRayHit rayHit = ray(origin, direction, length * (1.0f - kShadowRayShortening));
+        ++counts.shadow;
+        rtcIntersect1(mState.rtcScene, &context, &rayHit);
+        if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return true;
+        const glm::vec3 hit = origin + rayHit.ray.tfar * direction;
+        return std::abs(glm::dot(hit - y.position, y.geometricNormal)) <= 4.0f * y.offset;
+    }
+
     const EmbreeState& mState;
     const std::vector<scene::Light>& mLights;
+    std::vector<float> mEmissionPdf;   // per light, emissionPdf()
     int mWidth, mHeight, mBounces;
     glm::dmat4 mClipToWorld{1.0};
 };
@@ -618,6 +780,7 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
 
     auto worker = [&] {
         RayCounts rays;
+        std::vector<LightVertex> lightVertices;
         for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
@@ -627,12 +790,15 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
                     glm::dvec3 direct(0.0), indirect(0.0);
                     int hits = 0;
                     for (int h = 0; h < 2; ++h) {
-                        Pcg32 rng(mix64(seed ^ std::uint64_t(pixel)), std::uint64_t(h));
+                        const std::uint64_t stream = mix64(seed ^ std::uint64_t(pixel));
+                        Pcg32 rng(stream, std::uint64_t(h));
+                        const auto scramble = std::uint32_t(mix64(stream + std::uint64_t(h)));
                         glm::dvec3 halfDirect(0.0), halfIndirect(0.0);
                         for (int s = 0; s < pathsPerHalf[h]; ++s) {
-                            const float jx = rng.nextFloat(), jy = rng.nextFloat();
-                            const PathSample path =
-                                    tracer.trace(float(x) + jx, float(y) + jy, rng, rays);
+                            float u[kSobolDimensions];
+                            sobolOwen(std::uint32_t(s), scramble, u);
+                            const PathSample path = tracer.trace(float(x) + u[0],
+                                    float(y) + u[1], u + 2, rng, lightVertices, rays);
                             halfDirect += glm::dvec3(path.direct);
                             halfIndirect += glm::dvec3(path.indirect);
                             hits += path.hit ? 1 : 0;
@@ -663,6 +829,7 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
         totalRays.primary += rays.primary;
         totalRays.shadow += rays.shadow;
         totalRays.bounce += rays.bounce;
+        totalRays.light += rays.light;
     };
 
     int threads = settings.threads > 0 ? settings.threads

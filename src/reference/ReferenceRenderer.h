@@ -7,11 +7,15 @@
 //   x s^2 (spot), E = I cos(theta) (directional); glTF `range` is never applied.
 // - Indirect light by cosine-weighted hemisphere sampling (pdf = cos/pi, so the throughput is
 //   multiplied by rho), for exactly `bounces` bounces and no Russian roulette: with bounces = 1
-//   the secondary hit adds only its emission and direct light. (PBRT 3rd ed., ch. 14.5
-//   "path tracing"; ch. 13.6.3 cosine-weighted hemisphere sampling.)
-// - A pixel is the mean radiance over its square: every path starts at a uniformly jittered
-//   position in the pixel. Each pixel's paths draw from its own PCG32 streams seeded from
-//   (seed, pixel index), so images are bit-identical for any thread count.
+//   the secondary hit adds only its emission and direct light (PBRT 3rd ed. 14.5 "path
+//   tracing", 13.6.3 cosine-weighted hemisphere sampling). Light that point and spot lights
+//   send to later vertices is also sampled from the light (a one-vertex light subpath joined
+//   to the path), and both estimates are combined by multiple importance sampling (Veach 1997
+//   ch. 9): a light close to a wall then does not turn into fireflies in the indirect image.
+// - A pixel is the mean radiance over its square: paths start at stratified positions over
+//   the whole pixel (Owen-scrambled Sobol', see OwenSobol.h, which also stratifies the first
+//   bounce and the first light's emission). Each pixel's numbers are seeded from (seed, pixel
+//   index), so images are bit-identical for any thread count.
 // - Ray origins are offset along the geometric normal by a distance relative to the magnitude
 //   of the triangle's coordinates, so scenes at any scale (mm or km) avoid self-intersection.
 #pragma once
@@ -36,9 +40,11 @@ using ProgressCallback = std::function<void(double fraction)>;
 
 struct RayCounts {
     std::uint64_t primary = 0;   // camera rays
-    std::uint64_t shadow = 0;    // next-event rays towards punctual lights
+    std::uint64_t shadow = 0;    // visibility rays: towards punctual lights (next-event
+                                 // estimation) and between a path and a light vertex
     std::uint64_t bounce = 0;    // continuation rays sampled from the BRDF
-    std::uint64_t total() const { return primary + shadow + bounce; }
+    std::uint64_t light = 0;     // rays sampled from a light's emission (light vertices)
+    std::uint64_t total() const { return primary + shadow + bounce + light; }
 };
 
 // Estimated relative noise of the combined (all-spp) image over geometry pixels (coverage >

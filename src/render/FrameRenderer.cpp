@@ -1,12 +1,51 @@
 #include "render/FrameRenderer.h"
 
+#include "gi/voxel/VoxelizationManager.h"
 #include "gl/Shared.h"
 
+#include <glm/gtc/matrix_inverse.hpp>
+
 namespace gi::render {
+
+namespace {
+
+constexpr std::pair<OutputComponent, const char*> kOutputNames[] = {
+        {OutputComponent::Final, "final"}, {OutputComponent::Direct, "direct"},
+        {OutputComponent::Indirect, "indirect"}, {OutputComponent::VoxelAlbedo, "voxel-albedo"},
+        {OutputComponent::VoxelIrradiance, "voxel-irradiance"},
+        {OutputComponent::VoxelNormal, "voxel-normal"}};
+
+} // namespace
+
+const char* outputComponentName(OutputComponent output) {
+    for (const auto& [value, name] : kOutputNames) {
+        if (value == output) return name;
+    }
+    return "?";
+}
+
+std::optional<OutputComponent> parseOutputComponent(std::string_view text) {
+    for (const auto& [value, name] : kOutputNames) {
+        if (text == name) return value;
+    }
+    return std::nullopt;
+}
+
+const char* giModeName(GiMode mode) {
+    switch (mode) {
+    case GiMode::Direct: return "direct";
+    case GiMode::Voxel: return "voxel";
+    case GiMode::Atlas: return "atlas";
+    case GiMode::Reference: return "reference";
+    }
+    return "?";
+}
 
 bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
         gl::ShaderLibrary& shaders, std::string& error) {
     mSettings = settings;
+    mShaders = &shaders;
+    mSceneDescription = &scene;
     mScene = std::make_unique<scene::GpuScene>(scene);
     mFrameUniforms = gl::createBuffer(sizeof(shader::FrameUniforms), nullptr,
             GL_DYNAMIC_STORAGE_BIT, "frame/uniforms");
@@ -16,10 +55,32 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     return true;
 }
 
-void FrameRenderer::setSettings(const Settings& settings) {
+bool FrameRenderer::setSettings(const Settings& settings, std::string& error) {
     const bool shadowsChanged = !(settings.shadow == mSettings.shadow);
+    if (mGi && !mGi->configure(settings, error)) return false;
     mSettings = settings;
     if (shadowsChanged) mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
+    return true;
+}
+
+bool FrameRenderer::setMode(GiMode mode, std::string& error) {
+    if (mode == mMode && (mGi || mode == GiMode::Direct)) return true;
+    std::unique_ptr<GiTechnique> technique;
+    if (mode == GiMode::Voxel) {
+        technique = std::make_unique<voxel::VoxelizationManager>();
+    } else if (mode != GiMode::Direct) {
+        error = mode == GiMode::Atlas ? "atlas GI is not available in this build yet"
+                                      : "the reference renderer is not a GPU mode";
+        return false;
+    }
+    if (technique && (!technique->init(*mShaders, *mSceneDescription, error) ||
+                             !technique->configure(mSettings, error))) {
+        return false;
+    }
+    // Only the active technique keeps GPU memory.
+    mGi = std::move(technique);
+    mMode = mode;
+    return true;
 }
 
 void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
@@ -40,10 +101,12 @@ void FrameRenderer::resizeTargets(glm::ivec2 size) {
 
 void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
         OutputComponent output, gl::GpuProfiler& profiler) {
+    profiler.newFrame();
     resizeTargets(outputSize * mSettings.supersample);
 
     shader::FrameUniforms frame{};
     frame.viewProjection = camera.viewProjection();
+    frame.inverseViewProjection = glm::inverse(frame.viewProjection);
     frame.view = camera.view;
     frame.cameraPosition = glm::vec4(camera.eye, 1.0f);
     frame.shading = glm::vec4(mSettings.specular, mSettings.shininess,
@@ -51,10 +114,31 @@ void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
     const int outputKind = output == OutputComponent::Final    ? OUTPUT_FINAL
                            : output == OutputComponent::Direct ? OUTPUT_DIRECT
                                                                : OUTPUT_INDIRECT;
-    frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, 0);
+    frame.screen = glm::vec4(glm::vec2(mRenderSize), 0.0f, 0.0f);
+    frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, mSettings.voxel.depthUpsample ? 1 : 0);
     glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
 
     mShadows.execute(*mScene, profiler);
+    GiOutputs gi;
+    if (mGi) {
+        const DebugView debugView = output == OutputComponent::VoxelAlbedo       ? DebugView::VoxelAlbedo
+                                    : output == OutputComponent::VoxelIrradiance ? DebugView::VoxelIrradiance
+                                    : output == OutputComponent::VoxelNormal     ? DebugView::VoxelNormal
+                                                                                 : DebugView::None;
+        mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView}, profiler);
+        gi = mGi->outputs();
+        if (gi.indirect) {
+            frame.screen = glm::vec4(glm::vec2(mRenderSize), glm::vec2(gi.size));
+            frame.counts.z = 1;
+            glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
+            glBindTextureUnit(BIND_TEX_INDIRECT, gi.indirect->id());
+        }
+    }
+    if (gi.debugImage) {
+        glCopyImageSubData(gi.debugImage->id(), GL_TEXTURE_2D, 0, 0, 0, 0, mColor.id(), GL_TEXTURE_2D,
+                0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
+        return;
+    }
     mForward.execute({*mScene, mShadows, mFrameUniforms}, {mFramebuffer, mRenderSize}, profiler);
 }
 
@@ -76,6 +160,9 @@ Image FrameRenderer::readback() const {
 std::vector<gl::MemoryItem> FrameRenderer::memory() const {
     std::vector<gl::MemoryItem> items = mScene->memory();
     for (const gl::MemoryItem& item : mShadows.memory()) items.push_back(item);
+    if (mGi) {
+        for (const gl::MemoryItem& item : mGi->memory()) items.push_back(item);
+    }
     const glm::ivec3 size(mRenderSize, 1);
     items.push_back({"frame/radiance", gl::textureBytes(GL_RGBA32F, size, 1)});
     items.push_back({"frame/depth", gl::textureBytes(GL_DEPTH_COMPONENT32F, size, 1)});

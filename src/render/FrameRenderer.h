@@ -9,17 +9,26 @@
 #include "render/ForwardPass.h"
 #include "scene/GpuScene.h"
 #include "render/ShadowPass.h"
+#include "gi/GiTechnique.h"
 #include "render/Image.h"
 #include "render/Settings.h"
 #include "scene/Scene.h"
 
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <string>
 
 namespace gi::render {
 
 enum class GiMode { Direct, Voxel, Atlas, Reference };
-enum class OutputComponent { Final, Direct, Indirect };
+// What a frame shows: a radiance component, or a technique's debug view.
+enum class OutputComponent { Final, Direct, Indirect, VoxelAlbedo, VoxelIrradiance, VoxelNormal };
+
+// Names used on the command line, in the viewer and in reports ("voxel-albedo", ...).
+[[nodiscard]] const char* outputComponentName(OutputComponent output);
+[[nodiscard]] std::optional<OutputComponent> parseOutputComponent(std::string_view name);
+[[nodiscard]] const char* giModeName(GiMode mode);
 
 class FrameRenderer {
 public:
@@ -27,7 +36,11 @@ public:
     bool init(const scene::Scene& scene, const Settings& settings, gl::ShaderLibrary& shaders,
             std::string& error);
 
-    void setSettings(const Settings& settings);
+    // Applies settings; false with a message if the active technique cannot honour them.
+    bool setSettings(const Settings& settings, std::string& error);
+    // Switches the GI technique (Direct = none). Reference is not a GPU mode.
+    bool setMode(GiMode mode, std::string& error);
+    GiMode mode() const { return mMode; }
     void setLights(const std::vector<scene::Light>& lights);
 
     // Renders one frame of `camera` at outputSize x render.supersample.
@@ -43,6 +56,8 @@ public:
     const scene::GpuScene& gpuScene() const { return *mScene; }
 
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+    // The active GI technique, or nullptr in direct mode.
+    const GiTechnique* technique() const { return mGi.get(); }
 
 private:
     void resizeTargets(glm::ivec2 size);
@@ -55,6 +70,10 @@ private:
     gl::Framebuffer mFramebuffer;
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;
+    GiMode mMode = GiMode::Direct;
+    std::unique_ptr<GiTechnique> mGi;
+    gl::ShaderLibrary* mShaders = nullptr;
+    const scene::Scene* mSceneDescription = nullptr;
     ForwardPass mForward;
 };
 

@@ -23,6 +23,8 @@ struct VoxelSettings {
     int levels = 3;               // voxel.cascades: l, nested levels, each twice the previous edge
     int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
     int injectResolution = 0;     // voxel.inject_resolution: light-view pixels; 0 = v (thesis)
+    bool injectFragmentMean = false;  // voxel.inject_fragment_mean: the thesis' mean over
+                                      // fragments instead of flux / surface area
     float traceScale = 0.5f;      // voxel.trace_scale: cone-trace resolution / output resolution
     float maxDistance = 0.0f;     // voxel.max_distance: metres; 0 = edge of the coarsest level
     float extent = 0.0f;          // voxel.extent: finest level edge (m); 0 = from the scene

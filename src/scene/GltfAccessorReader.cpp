@@ -182,6 +182,11 @@ bool resolveLayout(const tinygltf::Model& model, int index, std::uint64_t maxCou
                     "-byte elements of " + layout.name;
             return false;
         }
+        if (accessor.byteOffset > view.size) {
+            error = layout.name + ": byteOffset " + std::to_string(accessor.byteOffset) +
+                    " exceeds " + view.name + ".byteLength (" + std::to_string(view.size) + ")";
+            return false;
+        }
         if (layout.count > 0) {
             std::uint64_t end = 0;
             bool overflowed = !spanEnd(accessor.byteOffset, layout.count - 1, layout.stride, end);

@@ -1080,7 +1080,9 @@ private:
         }
         const std::size_t vertexCount = data.count;
         out.positions.resize(vertexCount);
-        std::memcpy(out.positions.data(), data.values.data(), vertexCount * sizeof(glm::vec3));
+        for (std::size_t i = 0; i < vertexCount; ++i) {
+            out.positions[i] = glm::make_vec3(&data.values[3 * i]);
+        }
 
         if (!readAttribute(source, element, "NORMAL", {3}, vertexCount, data, present)) {
             return false;
@@ -1106,7 +1108,9 @@ private:
             if (present) {
                 auto& texcoords = set == 0 ? out.texcoords0 : out.texcoords1;
                 texcoords.resize(vertexCount);
-                std::memcpy(texcoords.data(), data.values.data(), vertexCount * sizeof(glm::vec2));
+                for (std::size_t i = 0; i < vertexCount; ++i) {
+                    texcoords[i] = glm::make_vec2(&data.values[2 * i]);
+                }
             }
         }
         if (!readAttribute(source, element, "COLOR_0", {3, 4}, vertexCount, data, present)) {

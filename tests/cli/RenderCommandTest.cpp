@@ -149,7 +149,7 @@ TEST(RenderCommand, RejectsCameraOutOfRange) {
 
 TEST(RenderCommand, ModesNotBuiltAnswerClearly) {
     const std::string dir = makeTempDir("render-modes");
-    for (const char* mode : {"voxel", "atlas", "reference"}) {
+    for (const char* mode : {"atlas", "reference"}) {
         expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", mode}),
                 mode, {dir + "/a.png"});
     }

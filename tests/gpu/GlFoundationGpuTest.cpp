@@ -54,6 +54,7 @@ TEST_F(GlFoundationGpuTest, TimerQueriesMeasureWork) {
     gl::GpuProfiler profiler;
     gl::Texture texture = gl::createTexture2D(GL_RGBA32F, {512, 512}, 1, "test/clear");
     for (int frame = 0; frame < 5; ++frame) {
+        profiler.newFrame();
         gl::GpuScope scope(profiler, "test/clear");
         const float value[4] = {1.0f, 2.0f, 3.0f, 4.0f};
         glClearTexImage(texture.id(), 0, GL_RGBA, GL_FLOAT, value);
@@ -65,6 +66,24 @@ TEST_F(GlFoundationGpuTest, TimerQueriesMeasureWork) {
     EXPECT_EQ(timings[0].samples, 5);
     EXPECT_GT(timings[0].gpuMsMedian, 0.0);
     EXPECT_LT(timings[0].gpuMsMedian, 10000.0);
+}
+
+// A pass run several times in a frame (once per light) is one sample: the sum of its runs.
+TEST_F(GlFoundationGpuTest, RepeatedScopesInOneFrameAreSummed) {
+    gl::GpuProfiler profiler;
+    gl::Texture texture = gl::createTexture2D(GL_RGBA32F, {256, 256}, 1, "test/clear");
+    const float value[4] = {1.0f, 2.0f, 3.0f, 4.0f};
+    for (int frame = 0; frame < 3; ++frame) {
+        profiler.newFrame();
+        for (int light = 0; light < 4; ++light) {
+            gl::GpuScope scope(profiler, "test/per_light");
+            glClearTexImage(texture.id(), 0, GL_RGBA, GL_FLOAT, value);
+        }
+    }
+    profiler.flush();
+    const auto timings = profiler.timings();
+    ASSERT_EQ(timings.size(), 1u);
+    EXPECT_EQ(timings[0].samples, 3);
 }
 
 TEST_F(GlFoundationGpuTest, IncompleteFramebufferIsReported) {

@@ -2,6 +2,7 @@
 // by each light type. Floor points whose segment to the light crosses the occluder must be
 // dark; points well outside the shadow must get the unshadowed analytic radiance.
 #include "GpuTest.h"
+#include "TestScenes.h"
 
 #include "render/CameraView.h"
 
@@ -11,30 +12,13 @@
 namespace gi::test {
 namespace {
 
-scene::Primitive square(float halfSize, float y) {
-    scene::Primitive p;
-    p.positions = {{-halfSize, y, -halfSize}, {halfSize, y, -halfSize}, {halfSize, y, halfSize},
-            {-halfSize, y, halfSize}};
-    p.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
-    p.indices = {0, 2, 1, 0, 3, 2};   // counter-clockwise seen from +Y
-    p.material = 0;
-    for (const glm::vec3& v : p.positions) p.localBounds.extend(v);
-    return p;
-}
-
 scene::Scene occluderScene(const scene::Light& light) {
     scene::Scene s;
     scene::Material white;
     white.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
     s.materials.push_back(white);
-    s.primitives.push_back(square(1.0f, 0.0f));
-    s.primitives.push_back(square(0.2f, 0.5f));
-    for (int i = 0; i < 2; ++i) {
-        scene::Instance instance;
-        instance.primitive = i;
-        s.instances.push_back(instance);
-        s.bounds.extend(s.primitives[std::size_t(i)].localBounds);
-    }
+    addPrimitive(s, horizontalSquare(1.0f, 0.0f));
+    addPrimitive(s, horizontalSquare(0.2f, 0.5f));
     s.lights.push_back(light);
     scene::Camera camera;
     // Straight down from above the light, so the floor fills the view around the occluder.

@@ -293,6 +293,22 @@ TEST(GltfLoader, SkipsPointAndLinePrimitivesWithWarnings) {
             << allWarnings(loaded);
 }
 
+TEST(GltfLoader, SkipsPrimitivesWithoutTrianglesWithAWarning) {
+    GltfBuilder builder;
+    const int empty = builder.addAccessor(builder.addBufferView(std::vector<float>{0}),
+            gi::test::kGltfFloat, 0, "VEC3");
+    const int two = builder.addVec3({{0, 0, 0}, {1, 0, 0}});
+    placeMesh(builder, builder.addMesh(json::array({{{"attributes", {{"POSITION", empty}}}},
+                               {{"attributes", {{"POSITION", two}}}}})));
+    const Loaded loaded = loadBuilt(builder);
+    ASSERT_TRUE(loaded.ok) << loaded.error;
+    EXPECT_TRUE(loaded.scene.primitives.empty());
+    EXPECT_TRUE(hasWarning(loaded, "meshes[0].primitives[0]: has no triangles; skipped"))
+            << allWarnings(loaded);
+    EXPECT_TRUE(hasWarning(loaded, "meshes[0].primitives[1]: has no triangles; skipped"))
+            << allWarnings(loaded);
+}
+
 TEST(GltfLoader, NonIndexedPrimitiveUsesVerticesInOrder) {
     GltfBuilder builder;
     placeMesh(builder, builder.addTriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0},

@@ -1,0 +1,80 @@
+// Light injection, fragment stage (thesis 4.3.3.2, Alg. 3): every surface fragment the light
+// sees computes its Lambert irradiance E from this light (DESIGN.md conventions) and adds it
+// to the finest voxel containing it, under the voxel's spinlock. The early depth test against
+// the depth pre-pass keeps fragments the light does not see from writing anything.
+//
+// INJECT_FRAGMENT (the thesis): the voxel keeps the mean E over this light's fragments.
+// Fragments are spread evenly in the light's image, not over the surface, so that mean
+// over-weights surfaces close to the light (a ceiling 1 cm above a point light reads its
+// peak irradiance) and voxels the light sees only partly read the lit part's irradiance.
+// INJECT_AREA: each fragment carries the flux through its light pixel,
+//   phi = E * A, A = footprint * d^2 * cos^3(theta_axis) / cos(theta_surface) (perspective)
+//                A = footprint / cos(theta_surface)                           (orthographic),
+// and the voxel's irradiance is the summed flux over the surface area voxelization measured:
+// the area-weighted mean irradiance of the surfaces in the voxel, lit or not.
+#include "voxel_common.glsl"
+
+layout(early_fragment_tests) in;
+
+layout(std430, binding = BIND_SSBO_LIGHTS) readonly buffer LightBlock {
+    GpuLight lights[];
+};
+
+layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
+    GpuMaterial materials[];
+};
+
+#include "../common/lighting.glsl"
+#include "../common/material.glsl"
+#include "voxel_lock.glsl"
+
+layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
+
+layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) coherent uniform image3D voxelHelper;
+
+in InjectVertex {
+    vec3 position;
+    vec3 normal;
+    vec2 texcoord0;
+    vec2 texcoord1;
+    vec4 color;
+} vin;
+
+void main() {
+    GpuMaterial m = materials[drawMaterial];
+    if (m.flags.z == ALPHA_MASK) {
+        vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+        if (materialCutOut(m, baseColor.a)) discard;
+    }
+    GpuLight light = lights[int(voxel.lightIndex.x)];
+    vec3 n = normalize(vin.normal);
+    // The side of the surface the light sees is the lit side, whatever the winding.
+    vec3 toLight;
+    float distance;
+    lightDirection(light, vin.position, toLight, distance);
+    if (dot(n, toLight) < 0.0) n = -n;
+    vec3 e = lightIrradiance(light, vin.position, n);
+    if (max(e.r, max(e.g, e.b)) <= voxel.injection.x) discard;
+    int level = finestLevel(vin.position);
+    if (level < 0) discard;
+    ivec3 texel = voxelTexel(vin.position, level);
+    if (int(voxel.modes.x) == INJECT_FRAGMENT) {
+        VOXEL_LOCKED_AVERAGE(texel, {
+            vec4 previous = imageLoad(voxelHelper, texel);
+            imageStore(voxelHelper, texel, roundToHalf(keep * previous + add * vec4(e, 1.0), dither));
+        })
+        return;
+    }
+    float cosSurface = max(dot(n, toLight), 0.05);
+    float area = voxel.injection.z / cosSurface;
+    if (voxel.injection.y == 0.0) {
+        float cosAxis = max(dot(-toLight, voxel.injectionAxis.xyz), 0.0);
+        area *= distance * distance * cosAxis * cosAxis * cosAxis;
+    }
+    float size = levelVoxelSize(level);
+    vec3 flux = e * area / (size * size);
+    VOXEL_LOCKED_AVERAGE(texel, {
+        vec4 previous = imageLoad(voxelHelper, texel);
+        imageStore(voxelHelper, texel, roundToHalf(vec4(previous.rgb + flux, 1.0), dither));
+    })
+}

@@ -1,0 +1,25 @@
+// Turns what injection accumulated into irradiance (thesis 4.3.3.2: the compute pass that
+// makes the per-voxel average a sum over lights).
+// INJECT_FRAGMENT, after each light: adds the light's mean irradiance to the sum over lights
+// (the thesis keeps the mean over lights and multiplies by their count: the same sum).
+// INJECT_AREA, once after all lights: irradiance = summed flux / surface area.
+// Both clear the helper.
+#include "voxel_common.glsl"
+
+layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
+
+layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) uniform image3D voxelHelper;
+layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) uniform image3D voxelIrradiance;
+
+void main() {
+    ivec3 texel = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(texel, imageSize(voxelHelper)))) return;
+    vec4 helper = imageLoad(voxelHelper, texel);
+    if (helper.a == 0.0) return;
+    vec4 current = imageLoad(voxelIrradiance, texel);
+    vec3 total = int(voxel.modes.x) == INJECT_AREA ? helper.rgb / max(current.a, 1e-4)
+                                                   : current.rgb + helper.rgb;
+    // Half floats overflow above 65504 W/m^2: clamp instead of writing Inf.
+    imageStore(voxelIrradiance, texel, vec4(min(total, vec3(65000.0)), current.a));
+    imageStore(voxelHelper, texel, vec4(0.0));
+}

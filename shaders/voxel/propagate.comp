@@ -1,0 +1,40 @@
+// Fills the centre of cascade level L from level L-1, which covers exactly that centre at
+// twice the resolution (thesis 4.3.3.3, Listings 4.3/4.4): each invocation averages the
+// 2x2x2 finer voxels. Albedo is averaged weighted by coverage (an opaque black voxel stays
+// distinct from an empty one), coverage and irradiance are averaged over all 8 (so both are
+// premultiplied by coverage), normals weighted by coverage. One dispatch per level, 8^3
+// work groups, (v/2)^3 invocations.
+#include "voxel_common.glsl"
+
+layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
+
+layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) uniform image3D voxelAlbedo;
+layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) uniform image3D voxelNormal;
+layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) uniform image3D voxelIrradiance;
+
+void main() {
+    int v = voxelResolution();
+    int level = voxel.grid.z;                   // the level being written, >= 1
+    ivec3 coarse = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(coarse, ivec3(v / 2)))) return;
+    ivec3 fineBase = coarse * 2 + ivec3(0, 0, (level - 1) * v);
+    vec4 albedo = vec4(0.0), irradiance = vec4(0.0);
+    vec3 normal = vec3(0.0);
+    for (int i = 0; i < 8; ++i) {
+        ivec3 fine = fineBase + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+        vec4 a = imageLoad(voxelAlbedo, fine);
+        albedo.rgb += a.rgb * a.a;
+        albedo.a += a.a;
+        irradiance += imageLoad(voxelIrradiance, fine);
+        normal += imageLoad(voxelNormal, fine).xyz * a.a;
+    }
+    if (albedo.a >= 0.01) albedo.rgb /= albedo.a;
+    else albedo.rgb = vec3(0.0);
+    albedo.a /= 8.0;
+    irradiance /= 8.0;
+    float len = length(normal);
+    ivec3 target = coarse + ivec3(v / 4, v / 4, v / 4 + level * v);
+    imageStore(voxelAlbedo, target, albedo);
+    imageStore(voxelIrradiance, target, irradiance);
+    imageStore(voxelNormal, target, vec4(len > 1e-4 ? normal / len : vec3(0.0), 0.0));
+}

@@ -1,0 +1,170 @@
+#include "gi/voxel/InjectPass.h"
+
+#include "gl/Shared.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace gi::voxel {
+namespace {
+
+// Region injection has to reach: the scene inside the coarsest level.
+scene::Aabb injectionRegion(const CascadeVolume& volume, const scene::Aabb& sceneBounds) {
+    const int coarsest = volume.levels() - 1;
+    scene::Aabb region;
+    region.extend(volume.origin(coarsest));
+    region.extend(volume.origin(coarsest) + glm::vec3(volume.extent(coarsest)));
+    if (!sceneBounds.empty()) {
+        region.min = glm::max(region.min, sceneBounds.min);
+        region.max = glm::min(region.max, sceneBounds.max);
+    }
+    return region;
+}
+
+float farthestCorner(const glm::vec3& p, const scene::Aabb& box) {
+    float farthest = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                (i & 4) ? box.max.z : box.min.z);
+        farthest = std::max(farthest, glm::length(corner - p));
+    }
+    return std::max(farthest * 1.01f, 1e-5f);
+}
+
+glm::vec3 upFor(const glm::vec3& direction) {
+    return std::abs(direction.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+} // namespace
+
+std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,
+        const CascadeVolume& volume, const scene::Aabb& sceneBounds, int resolution) {
+    const float pixels = float(std::max(resolution, 1));
+    std::vector<LightView> views;
+    const scene::Aabb region = injectionRegion(volume, sceneBounds);
+    if (region.empty()) return views;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const scene::Light& light = lights[i];
+        const int index = int(i);
+        if (light.type == scene::LightType::Directional) {
+            const glm::vec3 center = region.center();
+            const float radius = std::max(0.5f * glm::length(region.size()), 1e-6f);
+            const glm::mat4 view = glm::lookAt(center - light.direction * (2.0f * radius), center,
+                    upFor(light.direction));
+            const float pixel = 2.0f * radius / pixels;
+            views.push_back({index, glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius) * view,
+                    light.direction, true, pixel * pixel});
+            continue;
+        }
+        const float far = farthestCorner(light.position, region);
+        const float near = far * 1e-4f;
+        if (light.type == scene::LightType::Spot) {
+            const float fov = std::min(2.0f * light.outerConeAngle + glm::radians(2.0f), glm::radians(170.0f));
+            const glm::mat4 view = glm::lookAt(light.position, light.position + light.direction,
+                    upFor(light.direction));
+            const float pixel = 2.0f * std::tan(0.5f * fov) / pixels;
+            views.push_back({index, glm::perspective(fov, 1.0f, near, far) * view, light.direction,
+                    false, pixel * pixel});
+            continue;
+        }
+        static const std::array<std::pair<glm::vec3, glm::vec3>, 6> faces = {{
+                {{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+                {{0, -1, 0}, {0, 0, -1}}, {{0, 0, 1}, {0, -1, 0}}, {{0, 0, -1}, {0, -1, 0}}}};
+        const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
+        const float pixel = 2.0f / pixels;   // tan(45 deg) = 1
+        for (const auto& [direction, up] : faces) {
+            views.push_back({index, projection * glm::lookAt(light.position, light.position + direction, up),
+                    direction, false, pixel * pixel});
+        }
+    }
+    return views;
+}
+
+bool InjectPass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mDepthProgram = shaders.build({"voxel/inject_depth",
+            {{GL_VERTEX_SHADER, "voxel/inject.vert"}, {GL_FRAGMENT_SHADER, "voxel/inject_depth.frag"}},
+            {}}, error);
+    if (!mDepthProgram) return false;
+    mInjectProgram = shaders.build({"voxel/inject",
+            {{GL_VERTEX_SHADER, "voxel/inject.vert"}, {GL_FRAGMENT_SHADER, "voxel/inject.frag"}},
+            {}}, error);
+    if (!mInjectProgram) return false;
+    mFinalizeProgram = shaders.build({"voxel/inject_finalize",
+            {{GL_COMPUTE_SHADER, "voxel/inject_finalize.comp"}}, {}}, error);
+    mFramebuffer = gl::createFramebuffer("voxel/inject");
+    return bool(mFinalizeProgram);
+}
+
+void InjectPass::resize(int resolution) {
+    if (resolution == mResolution) return;
+    mResolution = resolution;
+    mDepth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, {resolution, resolution}, 1, "voxel/inject_depth");
+    glNamedFramebufferTexture(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
+    glNamedFramebufferDrawBuffer(mFramebuffer.id(), GL_NONE);
+}
+
+void InjectPass::finalize(const Inputs& in, const VoxelTextures& t, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "voxel/finalize");
+    const glm::ivec3 size(t.resolution, t.resolution, t.resolution * t.levels);
+    const glm::ivec3 groups = (size + VOXEL_LOCAL_SIZE - 1) / VOXEL_LOCAL_SIZE;
+    glUseProgram(mFinalizeProgram.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
+    glBindImageTexture(BIND_IMG_VOXEL_HELPER, t.helper.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
+    glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, t.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
+    // Consumers: the next light's injection (helper) and propagation (irradiance).
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    resize(in.resolution);
+    const VoxelTextures& t = out.textures;
+    std::size_t next = 0;
+    while (next < in.views.size()) {
+        const int light = in.views[next].light;
+        {
+            gl::GpuScope scope(profiler, "voxel/inject");
+            // Each light averages its own fragments: counts restart at zero.
+            glClearTexImage(t.lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+            glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+            glViewport(0, 0, mResolution, mResolution);
+            glDisable(GL_CULL_FACE);
+            glDisable(GL_BLEND);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glEnable(GL_DEPTH_TEST);
+            glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
+            glBindImageTexture(BIND_IMG_VOXEL_HELPER, t.helper.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
+            glBindImageTexture(BIND_IMG_VOXEL_LOCK, t.lock.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+            for (; next < in.views.size() && in.views[next].light == light; ++next) {
+                in.setView(in.views[next]);
+                // The depth mask gates clears too: enable it before clearing.
+                glDepthMask(GL_TRUE);
+                glDepthFunc(GL_LESS);
+                const float clearDepth = 1.0f;
+                glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
+                glUseProgram(mDepthProgram.id());
+                in.scene.drawAll(mDepthProgram.id(), false);
+                glDepthFunc(GL_LEQUAL);
+                glDepthMask(GL_FALSE);
+                glUseProgram(mInjectProgram.id());
+                in.scene.drawAll(mInjectProgram.id(), false);
+                // Consumer: the next view of this light continues the same running averages.
+                glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            }
+            glDepthMask(GL_TRUE);
+            glDisable(GL_DEPTH_TEST);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        }
+        if (in.fragmentMean) finalize(in, t, profiler);
+    }
+    if (!in.fragmentMean) finalize(in, t, profiler);
+    glUseProgram(0);
+}
+
+} // namespace gi::voxel

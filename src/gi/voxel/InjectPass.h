@@ -1,0 +1,64 @@
+// Light injection (thesis 4.2.3, 4.3.3.2, Alg. 3): the scene is rendered from every light
+// (directional: orthographic over the coarsest level; spot: perspective over its outer
+// cone; point: six 90-degree views) at voxel.inject_resolution; each visible fragment
+// averages its Lambert irradiance into its voxel. A depth pre-pass per view makes the
+// forced early depth test exact. After each light a compute pass adds the light's mean to
+// the per-voxel sum over lights (the "finalize" step) and the lock counts are cleared.
+// Inputs : GpuScene (geometry, lights), VoxelUniforms, cascade placement (for the views).
+// Outputs: VoxelTextures irradiance (rgb = E summed over lights, W/m^2; a = light count).
+#pragma once
+
+#include "gi/voxel/CascadeVolume.h"
+#include "gi/voxel/VoxelTextures.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "scene/GpuScene.h"
+#include "scene/Scene.h"
+
+#include <functional>
+#include <vector>
+
+namespace gi::voxel {
+
+// The views a light is injected through (exposed for tests).
+struct LightView {
+    int light = 0;                    // index into the light table
+    glm::mat4 viewProjection{1.0f};   // world -> clip
+    glm::vec3 axis{0.0f, 0.0f, -1.0f};   // unit forward axis of the view
+    bool orthographic = false;
+    float footprint = 0.0f;           // one pixel: sr on the axis (perspective) or m^2 (ortho)
+};
+
+// Views covering the scene inside the coarsest level, `resolution` pixels per side.
+[[nodiscard]] std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,
+        const CascadeVolume& volume, const scene::Aabb& sceneBounds, int resolution);
+
+class InjectPass {
+public:
+    struct Inputs {
+        const scene::GpuScene& scene;
+        const std::vector<LightView>& views;      // grouped by light, in light order
+        const gl::Buffer& voxelUniforms;          // VoxelUniforms, std140; updated per view
+        // Writes one view's matrix and light index into voxelUniforms.
+        std::function<void(const LightView&)> setView;
+        int resolution;                           // light-view pixels per side
+        bool fragmentMean;                        // INJECT_FRAGMENT: finalize after each light
+    };
+    struct Outputs {
+        const VoxelTextures& textures;
+    };
+
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
+
+private:
+    void resize(int resolution);
+    void finalize(const Inputs& in, const VoxelTextures& textures, gl::GpuProfiler& profiler);
+
+    gl::ProgramRef mDepthProgram, mInjectProgram, mFinalizeProgram;
+    gl::Framebuffer mFramebuffer;
+    gl::Texture mDepth;
+    int mResolution = 0;
+};
+
+} // namespace gi::voxel

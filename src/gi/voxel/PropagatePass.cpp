@@ -1,0 +1,33 @@
+#include "gi/voxel/PropagatePass.h"
+
+#include "gl/Shared.h"
+
+namespace gi::voxel {
+
+bool PropagatePass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mProgram = shaders.build({"voxel/propagate", {{GL_COMPUTE_SHADER, "voxel/propagate.comp"}}, {}},
+            error);
+    return bool(mProgram);
+}
+
+void PropagatePass::execute(const Inputs& in, const VoxelTextures& t, gl::GpuProfiler& profiler) {
+    if (t.levels < 2) return;
+    gl::GpuScope scope(profiler, "voxel/propagate");
+    glUseProgram(mProgram.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
+    glBindImageTexture(BIND_IMG_VOXEL_ALBEDO, t.albedo.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
+    glBindImageTexture(BIND_IMG_VOXEL_NORMAL, t.normal.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA8_SNORM);
+    glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, t.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
+    const GLuint groups = GLuint((t.resolution / 2 + VOXEL_LOCAL_SIZE - 1) / VOXEL_LOCAL_SIZE);
+    for (int level = 1; level < t.levels; ++level) {
+        in.setLevel(level);
+        glDispatchCompute(groups, groups, groups);
+        // Consumer: the next level reads this one's results.
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    // Consumer: cone tracing and debug views sample the textures.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+} // namespace gi::voxel

@@ -1,0 +1,45 @@
+#include "gi/voxel/VoxelTextures.h"
+
+namespace gi::voxel {
+namespace {
+
+gl::Texture createVolume(GLenum format, int v, int l, const char* label) {
+    gl::Texture texture = gl::createTexture3D(format, {v, v, v * l}, 1, label);
+    const GLint filter = format == GL_R32UI ? GL_NEAREST : GL_LINEAR;
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, filter);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
+        glTextureParameteri(texture.id(), wrap, GL_CLAMP_TO_EDGE);
+    }
+    return texture;
+}
+
+} // namespace
+
+void VoxelTextures::allocate(int v, int l) {
+    resolution = v;
+    levels = l;
+    albedo = createVolume(GL_RGBA16F, v, l, "voxel/albedo");
+    normal = createVolume(GL_RGBA8_SNORM, v, l, "voxel/normal");
+    irradiance = createVolume(GL_RGBA16F, v, l, "voxel/irradiance");
+    helper = createVolume(GL_RGBA16F, v, l, "voxel/helper");
+    lock = createVolume(GL_R32UI, v, l, "voxel/lock");
+}
+
+void VoxelTextures::clear() const {
+    for (const gl::Texture* t : {&albedo, &normal, &irradiance, &helper}) {
+        glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+    }
+    glClearTexImage(lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+}
+
+std::vector<gl::MemoryItem> VoxelTextures::memory() const {
+    const glm::ivec3 size(resolution, resolution, resolution * levels);
+    return {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
+            {"voxel/normal", gl::textureBytes(GL_RGBA8_SNORM, size, 1)},
+            {"voxel/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
+            {"voxel/helper", gl::textureBytes(GL_RGBA16F, size, 1)},
+            {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)}};
+}
+
+} // namespace gi::voxel

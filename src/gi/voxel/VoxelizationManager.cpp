@@ -1,0 +1,152 @@
+#include "gi/voxel/VoxelizationManager.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gi::voxel {
+namespace {
+
+bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+} // namespace
+
+bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& scene,
+        std::string& error) {
+    mSceneBounds = scene.bounds;
+    mUniforms = gl::createBuffer(sizeof(shader::VoxelUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT,
+            "voxel/uniforms");
+    return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
+           mPropagate.init(shaders, error) && mTrace.init(shaders, error) &&
+           mDebugView.init(shaders, error);
+}
+
+bool VoxelizationManager::configure(const Settings& settings, std::string& error) {
+    const VoxelSettings& s = settings.voxel;
+    if (!isPowerOfTwo(s.resolution) || s.resolution < 4) {
+        error = "voxel.resolution " + std::to_string(s.resolution) +
+                " must be a power of two (4..256): nested levels share 2x2x2 voxel blocks";
+        return false;
+    }
+    GLint max3D = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+    if (s.resolution * s.levels > max3D) {
+        error = "voxel.resolution x voxel.cascades = " + std::to_string(s.resolution * s.levels) +
+                " exceeds GL_MAX_3D_TEXTURE_SIZE " + std::to_string(max3D);
+        return false;
+    }
+    GLint maxViewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+    if (s.resolution * s.multiplier > std::min(maxViewport[0], maxViewport[1])) {
+        error = "voxel.resolution x voxel.multiplier = " + std::to_string(s.resolution * s.multiplier) +
+                " exceeds the largest viewport " + std::to_string(maxViewport[0]);
+        return false;
+    }
+    const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
+                            s.levels != mSettings.levels;
+    const bool replace = reallocate || s.extent != mSettings.extent;
+    mSettings = s;
+    mConfigured = true;
+    if (reallocate) mTextures.allocate(s.resolution, s.levels);
+    if (replace) mFinestExtent = s.extent;
+    return true;
+}
+
+void VoxelizationManager::writeUniforms() {
+    shader::VoxelUniforms& u = mUniformData;
+    for (int level = 0; level < CascadeVolume::kMaxLevels; ++level) {
+        const int l = std::min(level, mVolume.levels() - 1);
+        u.levelOrigin[level] = glm::vec4(mVolume.origin(l), mVolume.voxelSize(l));
+    }
+    u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), 0, 0);
+    const float halfAngle = glm::radians(mSettings.coneAngle) * 0.5f;
+    const float maxDistance = mSettings.maxDistance > 0.0f
+            ? mSettings.maxDistance
+            : mVolume.extent(mVolume.levels() - 1) * std::sqrt(3.0f);
+    u.trace = glm::vec4(std::tan(halfAngle), maxDistance, mSettings.stepFactor,
+            mSettings.falloff ? 1.0f : 0.0f);
+    // The 9 cones partition the cosine-weighted hemisphere at theta_b, halfway between the
+    // normal and the ring of cones at 50 degrees (see cone_trace.frag).
+    const float ringAngle = glm::radians(50.0f);
+    const float boundary = 0.5f * ringAngle;
+    const float central = std::sin(boundary) * std::sin(boundary);
+    u.traceWeights = glm::vec4(central, (1.0f - central) / 8.0f, std::cos(ringAngle), std::sin(ringAngle));
+    const int coarsest = mVolume.levels() - 1;
+    const float rasterPixel = mVolume.extent(coarsest) / float(mSettings.resolution * mSettings.multiplier);
+    u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
+            rasterPixel * rasterPixel, 0.0f, 0.0f);
+    glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
+}
+
+void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    if (mFinestExtent <= 0.0f) {
+        mFinestExtent = CascadeVolume::finestExtentFor(mSceneBounds, in.camera.eye, mSettings.levels);
+    }
+    if (mVolume.resolution() != mSettings.resolution || mVolume.levels() != mSettings.levels ||
+            mVolume.extent(0) != mFinestExtent) {
+        mVolume = CascadeVolume(mSettings.resolution, mSettings.levels, mFinestExtent);
+    }
+    mVolume.placeAround(in.camera.eye);
+    writeUniforms();
+    {
+        gl::GpuScope scope(profiler, "voxel/clear");
+        mTextures.clear();
+    }
+    mVoxelize.execute({in.scene, mUniforms, mSettings.resolution * mSettings.multiplier},
+            {mTextures}, profiler);
+
+    const int injectResolution = mSettings.injectResolution > 0 ? mSettings.injectResolution
+                                                                : mSettings.resolution;
+    const std::vector<LightView> views =
+            injectionViews(in.lights, mVolume, mSceneBounds, injectResolution);
+    mInject.execute({in.scene, views, mUniforms,
+                            [this](const LightView& view) {
+                                mUniformData.viewProjection = view.viewProjection;
+                                mUniformData.lightIndex = glm::vec4(float(view.light), 0, 0, 0);
+                                mUniformData.injection.y = view.orthographic ? 1.0f : 0.0f;
+                                mUniformData.injection.z = view.footprint;
+                                mUniformData.injectionAxis = glm::vec4(view.axis, 0.0f);
+                                glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
+                            },
+                            injectResolution, mSettings.injectFragmentMean},
+            {mTextures}, profiler);
+
+    mPropagate.execute({mUniforms,
+                               [this](int level) {
+                                   mUniformData.grid.z = level;
+                                   glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
+                               }},
+            mTextures, profiler);
+
+    const glm::ivec2 traceSize = glm::max(
+            glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
+    mTrace.resize(traceSize);
+    mTrace.execute({in.scene, in.frameUniforms, mUniforms, mTextures}, profiler);
+
+    mShowDebug = in.debugView != DebugView::None;
+    if (mShowDebug) {
+        const int view = in.debugView == DebugView::VoxelAlbedo ? 0
+                         : in.debugView == DebugView::VoxelIrradiance ? 1 : 2;
+        mUniformData.grid.z = std::min(mSettings.debugLevel, mVolume.levels() - 1);
+        mUniformData.injection.w = float(view);
+        glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
+        mDebugView.execute(in.frameUniforms, mUniforms, mTextures, in.outputSize, profiler);
+    }
+}
+
+GiOutputs VoxelizationManager::outputs() const {
+    GiOutputs out;
+    out.indirect = &mTrace.indirect();
+    out.size = mTrace.size();
+    out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
+    return out;
+}
+
+std::vector<gl::MemoryItem> VoxelizationManager::memory() const {
+    std::vector<gl::MemoryItem> items = mTextures.memory();
+    for (const gl::MemoryItem& item : mTrace.memory()) items.push_back(item);
+    return items;
+}
+
+} // namespace gi::voxel

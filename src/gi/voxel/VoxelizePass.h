@@ -1,0 +1,36 @@
+// Geometry-shader voxelization (thesis 4.2.2, 4.3.3.1): every triangle is projected along
+// its dominant axis onto a v x multiplier raster spanning the coarsest level; each fragment
+// averages its albedo and normal into the finest level containing it, under the voxel's
+// spinlock. Depth test, culling and colour writes are off.
+// Inputs : GpuScene (world-space triangles, materials), VoxelUniforms (cascade placement).
+// Outputs: VoxelTextures albedo (rgb albedo, a = 1 where occupied) and normal, lock counts.
+#pragma once
+
+#include "gi/voxel/VoxelTextures.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "scene/GpuScene.h"
+
+namespace gi::voxel {
+
+class VoxelizePass {
+public:
+    struct Inputs {
+        const scene::GpuScene& scene;
+        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140
+        int rasterSize;                    // pixels per side: v x voxel.multiplier
+    };
+    struct Outputs {
+        const VoxelTextures& textures;
+    };
+
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
+
+private:
+    gl::ProgramRef mProgram;
+    gl::Framebuffer mFramebuffer;   // no attachments: rasterization only
+    int mSize = 0;
+};
+
+} // namespace gi::voxel

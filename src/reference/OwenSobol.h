@@ -1,0 +1,28 @@
+// Owen-scrambled Sobol' points in 6 dimensions, for the reference renderer's pixel position
+// (dimensions 0, 1), first bounce direction (2, 3) and first light's emission direction (4, 5). Every point is uniformly distributed
+// (so estimates stay unbiased), and the first 2^m points of one scrambled sequence are
+// stratified in every dimension and, for dimensions (0, 1), in every 2D elementary interval,
+// which removes most of the noise of the pixel average and the one-bounce integral
+// (PBRT 3rd ed. 7.4 "(0,2)-sequence sampler"). Scrambling is hash-based nested uniform
+// scrambling with a shuffled index: B. Burley, "Practical Hash-based Owen Scrambling", JCGT
+// 9(4), 2020. Direction numbers: S. Joe and F. Y. Kuo, new-joe-kuo-6.21201 (dimensions 2-6 of
+// their table; dimension 1 is the van der Corput sequence).
+#pragma once
+
+#include <cstdint>
+
+namespace gi::reference {
+
+constexpr int kSobolDimensions = 6;
+
+// Unscrambled Sobol' coordinate of point `index` in `dimension` (0..5), as a 32-bit fraction.
+[[nodiscard]] std::uint32_t sobol(std::uint32_t index, int dimension);
+
+// Owen-scrambled, index-shuffled coordinate in [0, 1); `seed` selects the scramble, so
+// different seeds give independent randomisations of the same point set.
+[[nodiscard]] float sobolOwen(std::uint32_t index, int dimension, std::uint32_t seed);
+
+// All coordinates of point `index` at once (what the overload above gives per dimension).
+void sobolOwen(std::uint32_t index, std::uint32_t seed, float out[kSobolDimensions]);
+
+} // namespace gi::reference

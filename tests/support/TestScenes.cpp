@@ -1,0 +1,38 @@
+#include "TestScenes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace gi::test {
+
+scene::Primitive horizontalSquare(float halfSize, float y) {
+    scene::Primitive p;
+    p.positions = {{-halfSize, y, -halfSize}, {halfSize, y, -halfSize}, {halfSize, y, halfSize},
+            {-halfSize, y, halfSize}};
+    p.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    p.indices = {0, 2, 1, 0, 3, 2};   // counter-clockwise seen from +Y
+    p.material = 0;
+    for (const glm::vec3& v : p.positions) p.localBounds.extend(v);
+    return p;
+}
+
+void addPrimitive(scene::Scene& scene, scene::Primitive primitive) {
+    scene::Instance instance;
+    instance.primitive = int(scene.primitives.size());
+    scene.bounds.extend(primitive.localBounds);
+    scene.primitives.push_back(std::move(primitive));
+    scene.instances.push_back(instance);
+}
+
+scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target, float yfovDegrees) {
+    scene::Camera camera;
+    const glm::vec3 forward = glm::normalize(target - eye);
+    const glm::vec3 up = std::abs(forward.y) > 0.99f ? glm::vec3(0.0f, 0.0f, -1.0f)
+                                                     : glm::vec3(0.0f, 1.0f, 0.0f);
+    camera.worldFromCamera = glm::inverse(glm::lookAt(eye, target, up));
+    camera.yfov = glm::radians(yfovDegrees);
+    return camera;
+}
+
+} // namespace gi::test

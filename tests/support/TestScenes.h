@@ -1,0 +1,18 @@
+// Small scenes built in code for GPU tests, so expected values follow from their geometry.
+#pragma once
+
+#include "scene/Scene.h"
+
+namespace gi::test {
+
+// A horizontal square of half-size `halfSize` at height y, facing +Y, material 0.
+[[nodiscard]] scene::Primitive horizontalSquare(float halfSize, float y);
+
+// Adds `primitive` with an identity transform and grows the scene bounds.
+void addPrimitive(scene::Scene& scene, scene::Primitive primitive);
+
+// A camera at `eye` looking at `target`.
+[[nodiscard]] scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target,
+        float yfovDegrees);
+
+} // namespace gi::test
