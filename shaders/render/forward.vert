@@ -15,6 +15,9 @@ out VertexData {
     vec4 color;
 } vout;
 
+// Bit-identical depth with the depth pre-pass, which uses another program.
+invariant gl_Position;
+
 void main() {
     vout.position = inPosition;
     vout.normal = inNormal;

@@ -32,7 +32,7 @@ layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 
 layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) coherent uniform image3D voxelHelper;
 
-in InjectVertex {
+in VertexData {
     vec3 position;
     vec3 normal;
     vec2 texcoord0;

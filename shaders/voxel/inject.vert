@@ -7,7 +7,7 @@ layout(location = ATTR_TEXCOORD0) in vec2 inTexcoord0;
 layout(location = ATTR_TEXCOORD1) in vec2 inTexcoord1;
 layout(location = ATTR_COLOR) in vec4 inColor;
 
-out InjectVertex {
+out VertexData {
     vec3 position;
     vec3 normal;
     vec2 texcoord0;

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <chrono>
 #include <cstdio>
 
 namespace gi::app {
@@ -26,11 +27,15 @@ double mebibytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); 
 int runInfo(const Config& config) {
     scene::Scene scene;
     std::string error;
+    const auto start = std::chrono::steady_clock::now();
     if (!loadScene(config, scene, error)) {
         std::fprintf(stderr, "voxatlas info: %s\n", error.c_str());
         return 2;
     }
+    const double loadSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("scene      %s\n", scene.sourcePath.c_str());
+    std::printf("load time  %.3f s (parse, buffers, texture decoding, validation)\n", loadSeconds);
     std::printf("triangles  %zu\n", scene.triangleCount());
     std::printf("vertices   %zu\n", scene.vertexCount());
     std::printf("primitives %zu (%zu instances)\n", scene.primitives.size(), scene.instances.size());

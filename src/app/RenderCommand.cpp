@@ -79,7 +79,8 @@ int runRender(const Config& config) {
     }
     if (!config.timingsPath.empty()) {
         TimingsReport report{config.scenePath, render::giModeName(config.mode), std::string(context->provider()),
-                context->description(), width, height, config.settings.frames,
+                context->description(),
+                profiler.mode() == gl::TimingMode::Finish ? "finish" : "queries", width, height, config.settings.frames,
                 profiler.timings(), renderer.memory()};
         if (!writeTimingsJson(config.timingsPath, report, error)) return cleanUp(), fail(1, error);
     }

@@ -10,6 +10,8 @@ namespace gi::app {
 std::string timingsJson(const TimingsReport& report) {
     nlohmann::json passes = nlohmann::json::array();
     for (const gl::PassTiming& pass : report.passes) {
+        // A pass that ran only during warm-up (cached shadow maps) has no timed samples.
+        if (pass.samples == 0) continue;
         passes.push_back({{"name", pass.name}, {"gpu_ms_median", pass.gpuMsMedian},
                 {"gpu_ms_mean", pass.gpuMsAverage}, {"cpu_ms_mean", pass.cpuMsAverage},
                 {"samples", pass.samples}});
@@ -22,7 +24,7 @@ std::string timingsJson(const TimingsReport& report) {
     }
     const nlohmann::json json = {{"scene", report.scene}, {"mode", report.mode},
             {"gl_provider", report.provider}, {"gl_renderer", report.renderer},
-            {"width", report.width}, {"height", report.height}, {"frames", report.frames},
+            {"timing", report.timing}, {"width", report.width}, {"height", report.height}, {"frames", report.frames},
             {"passes", passes}, {"memory_bytes", memory}, {"memory_bytes_total", total}};
     return json.dump(2) + "\n";
 }

@@ -12,6 +12,7 @@ namespace gi::app {
 
 struct TimingsReport {
     std::string scene, mode, provider, renderer;
+    std::string timing;   // "queries" (GL timestamps) or "finish" (glFinish + wall clock)
     int width = 0, height = 0, frames = 0;
     std::vector<gl::PassTiming> passes;
     std::vector<gl::MemoryItem> memory;

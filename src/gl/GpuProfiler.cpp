@@ -30,6 +30,35 @@ double tailMean(const std::vector<double>& values, int window) {
 
 } // namespace
 
+TimingMode timingModeFor(const std::string& glRenderer) {
+    return glRenderer.find("llvmpipe") != std::string::npos ||
+                           glRenderer.find("softpipe") != std::string::npos
+            ? TimingMode::Finish
+            : TimingMode::Queries;
+}
+
+TimingMode currentContextTimingMode() {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return timingModeFor(renderer ? renderer : "");
+}
+
+void GpuProfiler::addSample(PassRecord& record, long frame, double gpuMs, double cpuMs) {
+    // Keep a bounded history so a long interactive session does not grow without limit.
+    constexpr std::size_t kMaxSamples = 8192;
+    if (record.gpuMs.size() >= kMaxSamples) {
+        record.gpuMs.erase(record.gpuMs.begin(), record.gpuMs.begin() + kMaxSamples / 2);
+        record.cpuMs.erase(record.cpuMs.begin(), record.cpuMs.begin() + kMaxSamples / 2);
+    }
+    if (frame == record.lastResolvedFrame && !record.gpuMs.empty()) {
+        record.gpuMs.back() += gpuMs;
+        record.cpuMs.back() += cpuMs;
+    } else {
+        record.gpuMs.push_back(gpuMs);
+        record.cpuMs.push_back(cpuMs);
+    }
+    record.lastResolvedFrame = frame;
+}
+
 void GpuProfiler::resolve(PassRecord& record, QueryPair& pair, bool wait) {
     if (!pair.pending) return;
     GLint available = GL_FALSE;
@@ -40,21 +69,7 @@ void GpuProfiler::resolve(PassRecord& record, QueryPair& pair, bool wait) {
     GLuint64 start = 0, stop = 0;
     glGetQueryObjectui64v(pair.start.id(), GL_QUERY_RESULT, &start);
     glGetQueryObjectui64v(pair.stop.id(), GL_QUERY_RESULT, &stop);
-    // Keep a bounded history so a long interactive session does not grow without limit.
-    constexpr std::size_t kMaxSamples = 8192;
-    if (record.gpuMs.size() >= kMaxSamples) {
-        record.gpuMs.erase(record.gpuMs.begin(), record.gpuMs.begin() + kMaxSamples / 2);
-        record.cpuMs.erase(record.cpuMs.begin(), record.cpuMs.begin() + kMaxSamples / 2);
-    }
-    const double gpuMs = double(stop - start) * 1e-6;
-    if (pair.frame == record.lastResolvedFrame && !record.gpuMs.empty()) {
-        record.gpuMs.back() += gpuMs;
-        record.cpuMs.back() += pair.cpuMs;
-    } else {
-        record.gpuMs.push_back(gpuMs);
-        record.cpuMs.push_back(pair.cpuMs);
-    }
-    record.lastResolvedFrame = pair.frame;
+    addSample(record, pair.frame, double(stop - start) * 1e-6, pair.cpuMs);
     pair.pending = false;
 }
 
@@ -68,6 +83,12 @@ void GpuProfiler::begin(const std::string& name) {
             pair.stop = createTimestampQuery();
         }
     }
+    if (mMode == TimingMode::Finish) {
+        glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name.c_str());
+        glFinish();
+        record.cpuStart = std::chrono::steady_clock::now();
+        return;
+    }
     QueryPair& pair = record.ring[std::size_t(record.next)];
     // The ring is full only if the GPU is more than kRingSize frames behind; waiting then
     // is the only way to keep the sample, and never happens at interactive rates.
@@ -79,6 +100,14 @@ void GpuProfiler::begin(const std::string& name) {
 
 void GpuProfiler::end(const std::string& name) {
     PassRecord& record = mPasses.at(name);
+    if (mMode == TimingMode::Finish) {
+        glFinish();
+        const double ms = std::chrono::duration<double, std::milli>(
+                std::chrono::steady_clock::now() - record.cpuStart).count();
+        glPopDebugGroup();
+        addSample(record, mFrame, ms, ms);
+        return;
+    }
     QueryPair& pair = record.ring[std::size_t(record.next)];
     glQueryCounter(pair.stop.id(), GL_TIMESTAMP);
     glPopDebugGroup();

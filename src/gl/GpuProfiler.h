@@ -5,6 +5,12 @@
 // A scope nested in another is timed too; totals are per pass name, not exclusive. A pass
 // that runs several times in one frame (e.g. once per light) yields one sample per frame:
 // the sum of its runs.
+//
+// Mesa's llvmpipe answers GL_TIMESTAMP when a command is queued for its rasterizer threads,
+// not when they finish, so its timer queries miss the fragment work (a 1280x720 pass reads
+// faster than a 256x256 one). TimingMode::Finish measures such drivers instead: glFinish
+// before and after each pass, wall-clock time between. Renderers choose it with
+// timingModeFor(GL_RENDERER).
 #pragma once
 
 #include "gl/Handle.h"
@@ -25,12 +31,19 @@ struct PassTiming {
     int samples = 0;             // resolved GPU samples
 };
 
+enum class TimingMode { Queries, Finish };
+
+// Finish for Mesa's software rasterizers (llvmpipe, softpipe), Queries elsewhere.
+[[nodiscard]] TimingMode timingModeFor(const std::string& glRenderer);
+[[nodiscard]] TimingMode currentContextTimingMode();
+
 class GpuProfiler {
 public:
     static constexpr int kRingSize = 16;
     static constexpr int kAverageWindow = 64;
 
-    GpuProfiler() = default;
+    explicit GpuProfiler(TimingMode mode = currentContextTimingMode()) : mMode(mode) {}
+    TimingMode mode() const { return mMode; }
     GpuProfiler(const GpuProfiler&) = delete;
     GpuProfiler& operator=(const GpuProfiler&) = delete;
 
@@ -65,10 +78,12 @@ private:
         long lastResolvedFrame = -1;
     };
     void resolve(PassRecord& record, QueryPair& pair, bool wait);
+    void addSample(PassRecord& record, long frame, double gpuMs, double cpuMs);
 
     std::map<std::string, PassRecord> mPasses;
     std::vector<std::string> mOrder;
     long mFrame = 0;
+    TimingMode mMode = TimingMode::Queries;
 };
 
 // RAII scope: times the enclosed GL commands as pass `name` and labels them as a debug group.

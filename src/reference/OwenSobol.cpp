@@ -58,6 +58,33 @@ std::uint32_t reverseBits(std::uint32_t x) {
     return (x >> 16) | (x << 16);
 }
 
+// tables[b][byte][d] = reverse(XOR of V_d[k] over the bits k of the index set in `byte`, where
+// the byte holds bits 8b..8b+7 of the bit-reversed index (index bit 31 - j <-> bit j)).
+using TableRow = std::array<std::uint32_t, kSobolDimensions>;
+using ReversedTables = std::array<std::array<TableRow, 256>, 4>;
+
+ReversedTables makeReversedTables() {
+    const DirectionTable& v = directions();
+    ReversedTables tables{};
+    for (int b = 0; b < 4; ++b) {
+        for (int byte = 0; byte < 256; ++byte) {
+            for (int d = 0; d < kSobolDimensions; ++d) {
+                std::uint32_t x = 0;
+                for (int bit = 0; bit < 8; ++bit) {
+                    if ((byte >> bit) & 1) x ^= v[std::size_t(d)][std::size_t(31 - (8 * b + bit))];
+                }
+                tables[std::size_t(b)][std::size_t(byte)][std::size_t(d)] = reverseBits(x);
+            }
+        }
+    }
+    return tables;
+}
+
+const ReversedTables& reversedTables() {
+    static const ReversedTables tables = makeReversedTables();
+    return tables;
+}
+
 // Burley 2020, listing 3: an approximately uniform permutation of the bit-reversed value in
 // which each bit depends only on lower bits (Laine-Karras), i.e. a nested uniform scramble.
 std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed) {
@@ -97,17 +124,26 @@ std::uint32_t sobol(std::uint32_t index, int dimension) {
     return x;
 }
 
-void sobolOwen(std::uint32_t index, std::uint32_t seed, float out[kSobolDimensions]) {
-    const DirectionTable& table = directions();
-    std::uint32_t x[kSobolDimensions] = {};
-    for (std::uint32_t bits = nestedUniformScramble(index, seed); bits != 0; bits &= bits - 1) {
-        const auto bit = std::size_t(std::countr_zero(bits));
-        for (std::size_t d = 0; d < kSobolDimensions; ++d) x[d] ^= table[d][bit];
-    }
+OwenSobolSampler::OwenSobolSampler(std::uint32_t seed) : mSeed(seed) {
     for (int d = 0; d < kSobolDimensions; ++d) {
-        const std::uint32_t scrambled =
-                nestedUniformScramble(x[d], hash32(hashCombine(seed, std::uint32_t(d))));
-        out[d] = float(scrambled >> 8) * (1.0f / 16777216.0f);
+        mDimensionSeeds[d] = hash32(hashCombine(seed, std::uint32_t(d)));
+    }
+}
+
+void OwenSobolSampler::point(std::uint32_t index, float out[kSobolDimensions]) const {
+    const ReversedTables& tables = reversedTables();
+    // reverse(shuffled index): the Laine-Karras step of nestedUniformScramble without the
+    // final reversal, which the reversed tables absorb.
+    const std::uint32_t reversedIndex = laineKarrasPermutation(reverseBits(index), mSeed);
+    const TableRow& r0 = tables[0][reversedIndex & 0xFFu];
+    const TableRow& r1 = tables[1][(reversedIndex >> 8) & 0xFFu];
+    const TableRow& r2 = tables[2][(reversedIndex >> 16) & 0xFFu];
+    const TableRow& r3 = tables[3][reversedIndex >> 24];
+    for (int d = 0; d < kSobolDimensions; ++d) {
+        // reverse(sobol(shuffled, d)), scrambled in the reversed domain, then reversed back.
+        const std::uint32_t reversed = r0[d] ^ r1[d] ^ r2[d] ^ r3[d];
+        const std::uint32_t x = reverseBits(laineKarrasPermutation(reversed, mDimensionSeeds[d]));
+        out[d] = float(x >> 8) * (1.0f / 16777216.0f);
     }
 }
 

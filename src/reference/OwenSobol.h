@@ -22,7 +22,18 @@ constexpr int kSobolDimensions = 6;
 // different seeds give independent randomisations of the same point set.
 [[nodiscard]] float sobolOwen(std::uint32_t index, int dimension, std::uint32_t seed);
 
-// All coordinates of point `index` at once (what the overload above gives per dimension).
-void sobolOwen(std::uint32_t index, std::uint32_t seed, float out[kSobolDimensions]);
+// The same points, all dimensions at once and faster: per-seed scramble keys are computed
+// once, and the Sobol' matrices are applied a byte at a time from tables in bit-reversed
+// order, which saves the bit reversals between the index shuffle and the scramble.
+class OwenSobolSampler {
+public:
+    explicit OwenSobolSampler(std::uint32_t seed);
+    // out[d] == sobolOwen(index, d, seed) for every dimension d.
+    void point(std::uint32_t index, float out[kSobolDimensions]) const;
+
+private:
+    std::uint32_t mSeed;
+    std::uint32_t mDimensionSeeds[kSobolDimensions];
+};
 
 } // namespace gi::reference

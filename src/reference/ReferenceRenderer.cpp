@@ -792,11 +792,12 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
                     for (int h = 0; h < 2; ++h) {
                         const std::uint64_t stream = mix64(seed ^ std::uint64_t(pixel));
                         Pcg32 rng(stream, std::uint64_t(h));
-                        const auto scramble = std::uint32_t(mix64(stream + std::uint64_t(h)));
+                        const OwenSobolSampler sampler(
+                                std::uint32_t(mix64(stream + std::uint64_t(h))));
                         glm::dvec3 halfDirect(0.0), halfIndirect(0.0);
                         for (int s = 0; s < pathsPerHalf[h]; ++s) {
                             float u[kSobolDimensions];
-                            sobolOwen(std::uint32_t(s), scramble, u);
+                            sampler.point(std::uint32_t(s), u);
                             const PathSample path = tracer.trace(float(x) + u[0],
                                     float(y) + u[1], u + 2, rng, lightVertices, rays);
                             halfDirect += glm::dvec3(path.direct);

@@ -8,7 +8,11 @@ bool ForwardPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mProgram = shaders.build({"render/forward",
             {{GL_VERTEX_SHADER, "render/forward.vert"}, {GL_FRAGMENT_SHADER, "render/forward.frag"}},
             {}}, error);
-    return bool(mProgram);
+    if (!mProgram) return false;
+    mDepthProgram = shaders.build({"render/depth_prepass",
+            {{GL_VERTEX_SHADER, "render/forward.vert"}, {GL_FRAGMENT_SHADER, "common/depth_only.frag"}},
+            {}}, error);
+    return bool(mDepthProgram);
 }
 
 void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
@@ -25,12 +29,22 @@ void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     glClearNamedFramebufferfv(out.target.id(), GL_COLOR, 0, clearColor);
     glClearNamedFramebufferfv(out.target.id(), GL_DEPTH, 0, &clearDepth);
 
-    glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
+    if (in.depthPrepass) {
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glUseProgram(mDepthProgram.id());
+        in.scene.drawAll(mDepthProgram.id(), true);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+    }
+    glUseProgram(mProgram.id());
     in.shadows.bind();
     in.scene.drawAll(mProgram.id(), true);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,5 +1,7 @@
 // Final shading at full resolution: Lambertian + Blinn-Phong direct light from every light
-// (DESIGN.md conventions) plus emission, into a linear-radiance target.
+// (DESIGN.md conventions), emission and the GI technique's indirect light, into a
+// linear-radiance target. An optional depth pre-pass (render.depth_prepass) lets each pixel
+// be shaded once however much geometry overlaps it.
 // Inputs : the GpuScene (vertices, materials, lights), shadow maps, the frame UBO.
 // Outputs: colour RGBA32F, linear radiance W/(m^2 sr), alpha = 1 on geometry, 0 elsewhere;
 //          depth DEPTH_COMPONENT32F.
@@ -20,6 +22,7 @@ public:
         const scene::GpuScene& scene;
         const ShadowPass& shadows;         // maps and GpuShadow table, already rendered
         const gl::Buffer& frameUniforms;   // FrameUniforms, std140
+        bool depthPrepass;
     };
     struct Outputs {
         const gl::Framebuffer& target;     // colour attachment 0 + depth
@@ -31,7 +34,7 @@ public:
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
-    gl::ProgramRef mProgram;
+    gl::ProgramRef mProgram, mDepthProgram;
 };
 
 } // namespace gi::render

@@ -139,7 +139,8 @@ void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
                 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
         return;
     }
-    mForward.execute({*mScene, mShadows, mFrameUniforms}, {mFramebuffer, mRenderSize}, profiler);
+    mForward.execute({*mScene, mShadows, mFrameUniforms, mSettings.depthPrepass},
+            {mFramebuffer, mRenderSize}, profiler);
 }
 
 Image FrameRenderer::readback() const {

@@ -84,6 +84,8 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> int& { return s.frames; }),
         intSetting("render.warmup", "frames rendered before timing starts", 0, 1000,
                 [](Settings& s) -> int& { return s.warmupFrames; }),
+        boolSetting("render.depth_prepass", "depth-only pass first, so each pixel is shaded once",
+                [](Settings& s) -> bool& { return s.depthPrepass; }),
         boolSetting("gl.debug", "log KHR_debug messages to stderr",
                 [](Settings& s) -> bool& { return s.glDebug; }),
         floatSetting("material.specular", "Blinn-Phong specular strength ks (0 = Lambert only)",

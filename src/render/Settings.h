@@ -51,6 +51,7 @@ struct Settings {
     int frames = 1;             // render.frames: frames rendered; timings are their median
     int warmupFrames = 0;       // render.warmup: frames rendered and discarded before timing
     bool glDebug = false;       // gl.debug: KHR_debug messages to stderr
+    bool depthPrepass = true;   // render.depth_prepass: shade each pixel once
     // Materials (Blinn-Phong; the specular term is extra to the Lambertian reference).
     float specular = 0.04f;     // material.specular: ks, 0 switches the specular term off
     float shininess = 64.0f;    // material.shininess: Blinn-Phong exponent n

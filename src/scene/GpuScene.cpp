@@ -54,15 +54,9 @@ void GpuScene::uploadGeometry(const Scene& scene) {
             draw.doubleSided = material.doubleSided;
             draw.alphaMasked = material.alphaMode == AlphaMode::Mask;
         }
-        // A mirroring transform turns counter-clockwise local triangles clockwise in world
-        // space; swapping two corners keeps every world-space front face counter-clockwise.
-        for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
-            const std::uint32_t a = primitive.indices[t], b = primitive.indices[t + 1],
-                                c = primitive.indices[t + 2];
-            indices.push_back(base + a);
-            indices.push_back(base + (instance.flipWinding ? c : b));
-            indices.push_back(base + (instance.flipWinding ? b : c));
-        }
+        // The loader already made every world-space triangle counter-clockwise, mirrored
+        // instances included (Scene.h), so indices are copied as they are.
+        for (const std::uint32_t index : primitive.indices) indices.push_back(base + index);
         if (draw.indexCount > 0) mDraws.push_back(draw);
     }
     mVertexBytes = vertices.size() * sizeof(SceneVertex);

@@ -51,7 +51,7 @@ TEST_F(GlFoundationGpuTest, ProjectShadersCompile) {
 }
 
 TEST_F(GlFoundationGpuTest, TimerQueriesMeasureWork) {
-    gl::GpuProfiler profiler;
+    gl::GpuProfiler profiler(gl::TimingMode::Queries);
     gl::Texture texture = gl::createTexture2D(GL_RGBA32F, {512, 512}, 1, "test/clear");
     for (int frame = 0; frame < 5; ++frame) {
         profiler.newFrame();
@@ -66,6 +66,35 @@ TEST_F(GlFoundationGpuTest, TimerQueriesMeasureWork) {
     EXPECT_EQ(timings[0].samples, 5);
     EXPECT_GT(timings[0].gpuMsMedian, 0.0);
     EXPECT_LT(timings[0].gpuMsMedian, 10000.0);
+}
+
+// llvmpipe's timestamps miss its rasterizer threads' work, so software renderers are timed
+// with glFinish; the measured time must grow with the work (a 2048^2 clear against a 64^2
+// one is 1000x the pixels; 4x is a bound no scheduling noise reaches).
+TEST_F(GlFoundationGpuTest, FinishTimingScalesWithWork) {
+    gl::GpuProfiler profiler(gl::TimingMode::Finish);
+    gl::Texture small = gl::createTexture2D(GL_RGBA32F, {64, 64}, 1, "test/small");
+    gl::Texture large = gl::createTexture2D(GL_RGBA32F, {2048, 2048}, 1, "test/large");
+    const float value[4] = {1.0f, 2.0f, 3.0f, 4.0f};
+    for (int frame = 0; frame < 5; ++frame) {
+        profiler.newFrame();
+        {
+            gl::GpuScope scope(profiler, "test/small");
+            glClearTexImage(small.id(), 0, GL_RGBA, GL_FLOAT, value);
+        }
+        {
+            gl::GpuScope scope(profiler, "test/large");
+            glClearTexImage(large.id(), 0, GL_RGBA, GL_FLOAT, value);
+        }
+    }
+    const auto timings = profiler.timings();
+    ASSERT_EQ(timings.size(), 2u);
+    EXPECT_EQ(timings[0].samples, 5);
+    EXPECT_GT(timings[1].gpuMsMedian, 4.0 * timings[0].gpuMsMedian);
+    if (std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).find("llvmpipe") !=
+            std::string::npos) {
+        EXPECT_EQ(gl::currentContextTimingMode(), gl::TimingMode::Finish);
+    }
 }
 
 // A pass run several times in a frame (once per light) is one sample: the sum of its runs.

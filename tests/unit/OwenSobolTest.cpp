@@ -73,11 +73,12 @@ TEST(OwenSobol, ScramblesAreUniformAndIndependent) {
     EXPECT_NE(sobolOwen(3, 2, 1), sobolOwen(3, 2, 2));
 }
 
-TEST(OwenSobol, FourDimensionalFormMatchesSingleDimensions) {
-    for (std::uint32_t seed : {3u, 77u}) {
-        for (std::uint32_t index = 0; index < 100; ++index) {
+TEST(OwenSobol, SamplerMatchesSingleDimensions) {
+    for (std::uint32_t seed : {3u, 77u, 0xFFFFFFFFu}) {
+        const OwenSobolSampler sampler(seed);
+        for (std::uint32_t index : {0u, 1u, 2u, 3u, 100u, 255u, 256u, 65537u, 0xFFFFFFFFu}) {
             float u[kSobolDimensions];
-            sobolOwen(index, seed, u);
+            sampler.point(index, u);
             for (int d = 0; d < kSobolDimensions; ++d) {
                 EXPECT_EQ(u[d], sobolOwen(index, d, seed));
             }

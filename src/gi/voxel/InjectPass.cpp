@@ -85,7 +85,7 @@ std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,
 
 bool InjectPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mDepthProgram = shaders.build({"voxel/inject_depth",
-            {{GL_VERTEX_SHADER, "voxel/inject.vert"}, {GL_FRAGMENT_SHADER, "voxel/inject_depth.frag"}},
+            {{GL_VERTEX_SHADER, "voxel/inject.vert"}, {GL_FRAGMENT_SHADER, "common/depth_only.frag"}},
             {}}, error);
     if (!mDepthProgram) return false;
     mInjectProgram = shaders.build({"voxel/inject",

@@ -1,17 +1,17 @@
-// Light injection, depth pre-pass: alpha-masked texels are cut out, everything else only
-// writes depth. Without this pass the early depth test of inject.frag would depend on draw
-// order (a fragment drawn before its occluder would still inject light).
-#include "voxel_common.glsl"
+// Depth pre-pass shared by every pass that shades each visible surface once: alpha-masked
+// texels are cut out, everything else only writes depth. The shading pass then runs with
+// an early LEQUAL test against it (its vertex stage declares gl_Position invariant).
+#include "shared.h"
 
 layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
     GpuMaterial materials[];
 };
 
-#include "../common/material.glsl"
+#include "material.glsl"
 
 layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 
-in InjectVertex {
+in VertexData {
     vec3 position;
     vec3 normal;
     vec2 texcoord0;
