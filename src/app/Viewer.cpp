@@ -4,6 +4,7 @@
 #include "app/RenderCommand.h"
 #include "app/SceneSetup.h"
 #include "app/Ui.h"
+#include "gi/voxel/VoxelizationManager.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 #include "platform/GlfwWindow.h"
@@ -96,6 +97,8 @@ private:
     void handleKey(const std::string& name);
     void selectMode(const ModeKey& entry);
     void cycleOutput();
+    // Applies a change to a copy of the settings; keeps it if the renderer accepts it.
+    void changeSetting(const std::function<void(Settings&)>& change, const std::string& key);
     void nextCamera();
     void reloadShaders();
     FlyInput readInput();
@@ -103,6 +106,8 @@ private:
     bool writeScreenshot(const render::Image& image, const std::string& path);
     void notify(const std::string& message);
     std::string cameraLabel() const;
+    // Distance from the camera to the coarsest cascade level's far corner (m).
+    float coarsestReach() const;
 
     const Config& mConfig;
     std::unique_ptr<scene::Scene> mScene;
@@ -140,7 +145,66 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
                 std::string(entry.name),
                 [this, &entry] { selectMode(entry); }});
     }
-    mHotkeys.push_back({"O", "output: final / direct / indirect", [this] { cycleOutput(); }});
+    mHotkeys.push_back({"O", "output: final / direct / indirect / debug views", [this] { cycleOutput(); }});
+    mHotkeys.push_back({"L", "cascade level shown by voxel debug views", [this] {
+        changeSetting([](Settings& s) { s.voxel.debugLevel = (s.voxel.debugLevel + 1) % s.voxel.levels; },
+                "voxel.debug_level");
+    }});
+    mHotkeys.push_back({"F1", "voxel resolution / 2", [this] {
+        changeSetting([](Settings& s) { s.voxel.resolution = std::max(8, s.voxel.resolution / 2); },
+                "voxel.resolution");
+    }});
+    mHotkeys.push_back({"F2", "voxel resolution x 2", [this] {
+        changeSetting([](Settings& s) { s.voxel.resolution = std::min(256, s.voxel.resolution * 2); },
+                "voxel.resolution");
+    }});
+    mHotkeys.push_back({"F3", "one cascade level less", [this] {
+        changeSetting([](Settings& s) {
+            s.voxel.levels = std::max(1, s.voxel.levels - 1);
+            s.voxel.debugLevel = std::min(s.voxel.debugLevel, s.voxel.levels - 1);
+        }, "voxel.cascades");
+    }});
+    mHotkeys.push_back({"F4", "one cascade level more", [this] {
+        changeSetting([](Settings& s) { s.voxel.levels = std::min(8, s.voxel.levels + 1); },
+                "voxel.cascades");
+    }});
+    mHotkeys.push_back({"F5", "cone-trace resolution 1, 1/2, 1/4, 1/8", [this] {
+        changeSetting([](Settings& s) {
+            s.voxel.traceScale = s.voxel.traceScale <= 0.125f ? 1.0f : s.voxel.traceScale * 0.5f;
+        }, "voxel.trace_scale");
+    }});
+    mHotkeys.push_back({"F6", "voxelization multiplier 1, 2, 4, 8, 16", [this] {
+        changeSetting([](Settings& s) {
+            s.voxel.multiplier = s.voxel.multiplier >= 16 ? 1 : s.voxel.multiplier * 2;
+        }, "voxel.multiplier");
+    }});
+    mHotkeys.push_back({"F7", "injection resolution v, 2v, 4v, 8v", [this] {
+        changeSetting([](Settings& s) {
+            const int v = s.voxel.resolution;
+            const int current = s.voxel.injectResolution > 0 ? s.voxel.injectResolution : v;
+            s.voxel.injectResolution = current >= 8 * v ? 0 : current * 2;
+        }, "voxel.inject_resolution");
+    }});
+    mHotkeys.push_back({"F8", "max cone distance / 2 (from the coarsest level's edge)", [this] {
+        changeSetting([this](Settings& s) {
+            const float start = s.voxel.maxDistance > 0.0f ? s.voxel.maxDistance : coarsestReach();
+            s.voxel.maxDistance = start * 0.5f;
+        }, "voxel.max_distance");
+    }});
+    mHotkeys.push_back({"F9", "max cone distance x 2 (0 = the coarsest level's edge)", [this] {
+        changeSetting([this](Settings& s) {
+            s.voxel.maxDistance = s.voxel.maxDistance * 2.0f >= coarsestReach() ? 0.0f
+                                                                                : s.voxel.maxDistance * 2.0f;
+        }, "voxel.max_distance");
+    }});
+    mHotkeys.push_back({"F10", "depth-aware / bilinear upsampling", [this] {
+        changeSetting([](Settings& s) { s.voxel.depthUpsample = !s.voxel.depthUpsample; },
+                "voxel.upsample_depth");
+    }});
+    mHotkeys.push_back({"F11", "injection: flux per area / the thesis' fragment mean", [this] {
+        changeSetting([](Settings& s) { s.voxel.injectFragmentMean = !s.voxel.injectFragmentMean; },
+                "voxel.inject_fragment_mean");
+    }});
     mHotkeys.push_back({"C", "next scene camera", [this] { nextCamera(); }});
     mHotkeys.push_back({"V", "vsync on / off", [this] {
         mWindow->setVsync(!mWindow->vsync());
@@ -175,14 +239,48 @@ void Viewer::selectMode(const ModeKey& entry) {
         return;
     }
     mMode = entry.mode;
+    if (!render::outputAvailable(mOutput, mMode)) mOutput = render::OutputComponent::Final;
     notify(std::string("mode: ") + entry.name);
 }
 
 void Viewer::cycleOutput() {
-    mOutput = mOutput == render::OutputComponent::Final    ? render::OutputComponent::Direct
-              : mOutput == render::OutputComponent::Direct ? render::OutputComponent::Indirect
-                                                           : render::OutputComponent::Final;
+    // Every output in the order of the name table; technique debug views show only while
+    // their technique is active, so the cycle skips the other technique's views.
+    const auto& outputs = render::allOutputComponents();
+    auto current = std::find(outputs.begin(), outputs.end(), mOutput);
+    for (std::size_t step = 1; step <= outputs.size(); ++step) {
+        const render::OutputComponent next =
+                outputs[(std::size_t(current - outputs.begin()) + step) % outputs.size()];
+        if (render::outputAvailable(next, mMode)) {
+            mOutput = next;
+            break;
+        }
+    }
     notify(std::string("output: ") + outputName(mOutput));
+}
+
+void Viewer::changeSetting(const std::function<void(Settings&)>& change, const std::string& key) {
+    Settings candidate = mSettings;
+    change(candidate);
+    std::string error;
+    if (!mRenderer.setSettings(candidate, error)) {
+        notify(error);
+        say(error);
+        return;
+    }
+    mSettings = candidate;
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (spec.key == key) notify(key + " = " + spec.get(mSettings));
+    }
+}
+
+float Viewer::coarsestReach() const {
+    const auto* technique = mRenderer.technique();
+    if (const auto* voxels = dynamic_cast<const voxel::VoxelizationManager*>(technique)) {
+        const int coarsest = voxels->volume().levels() - 1;
+        return voxels->volume().extent(coarsest) * std::sqrt(3.0f);
+    }
+    return 2.0f * glm::length(mScene->bounds.size());
 }
 
 void Viewer::nextCamera() {

@@ -31,6 +31,22 @@ std::optional<OutputComponent> parseOutputComponent(std::string_view text) {
     return std::nullopt;
 }
 
+const std::vector<OutputComponent>& allOutputComponents() {
+    static const std::vector<OutputComponent> all = [] {
+        std::vector<OutputComponent> outputs;
+        for (const auto& [value, name] : kOutputNames) outputs.push_back(value);
+        return outputs;
+    }();
+    return all;
+}
+
+bool outputAvailable(OutputComponent output, GiMode mode) {
+    const std::string_view name = outputComponentName(output);
+    if (name.rfind("voxel-", 0) == 0) return mode == GiMode::Voxel;
+    if (name.rfind("atlas-", 0) == 0) return mode == GiMode::Atlas;
+    return true;
+}
+
 const char* giModeName(GiMode mode) {
     switch (mode) {
     case GiMode::Direct: return "direct";

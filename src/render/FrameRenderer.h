@@ -29,6 +29,9 @@ enum class OutputComponent { Final, Direct, Indirect, VoxelAlbedo, VoxelIrradian
 [[nodiscard]] const char* outputComponentName(OutputComponent output);
 [[nodiscard]] std::optional<OutputComponent> parseOutputComponent(std::string_view name);
 [[nodiscard]] const char* giModeName(GiMode mode);
+[[nodiscard]] const std::vector<OutputComponent>& allOutputComponents();
+// False for a technique's debug view while another mode is active.
+[[nodiscard]] bool outputAvailable(OutputComponent output, GiMode mode);
 
 class FrameRenderer {
 public:

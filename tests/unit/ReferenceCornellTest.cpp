@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -37,14 +38,15 @@ ReferenceSettings settingsFor(int spp, int threads) {
     return settings;
 }
 
-void print(const ReferenceResult& r) {
+void print(const ReferenceResult& r, double cpuSeconds = 0.0) {
     std::printf("[ cornell  ] %dx%d %5d spp: noise final %.3f%% indirect %.3f%% direct %.3f%%; "
-                "%.2f s, %.1f M rays (%.1f M primary, %.1f M shadow, %.1f M bounce), "
-                "%.2f M rays/s\n",
+                "%.2f s (%.2f s CPU), %.1f M rays (%.1f M primary, %.1f M shadow, %.1f M "
+                "bounce, %.1f M light), %.2f M rays/s\n",
             r.width(), r.height(), r.spp, 100.0 * r.noise.final, 100.0 * r.noise.indirect,
-            100.0 * r.noise.direct, r.seconds, double(r.rays.total()) * 1e-6,
+            100.0 * r.noise.direct, r.seconds, cpuSeconds, double(r.rays.total()) * 1e-6,
             double(r.rays.primary) * 1e-6, double(r.rays.shadow) * 1e-6,
-            double(r.rays.bounce) * 1e-6, r.raysPerSecond() * 1e-6);
+            double(r.rays.bounce) * 1e-6, double(r.rays.light) * 1e-6,
+            r.raysPerSecond() * 1e-6);
 }
 
 TEST(ReferenceCornell, NoiseFallsWithSamples) {
@@ -84,8 +86,9 @@ TEST(ReferenceCornell, DISABLED_SamplesForOnePercentNoiseAt256) {
     bool finalReached = false, indirectReached = false;
     ReferenceResult last;
     for (int spp = 4; spp <= 4096 && !(finalReached && indirectReached); spp *= 2) {
+        const std::clock_t cpuStart = std::clock();
         const ReferenceResult r = renderer.render(camera, kSize, kSize, settingsFor(spp, 2));
-        print(r);
+        print(r, double(std::clock() - cpuStart) / CLOCKS_PER_SEC);
         if (!finalReached && r.noise.final <= 0.01) {
             finalReached = true;
             std::printf("[ cornell  ] final <= 1%% at %d spp in %.2f s\n", spp, r.seconds);
