@@ -9,6 +9,7 @@
 #define BIND_UBO_FRAME              0   // FrameUniforms, one per rendered view
 
 #define BIND_UBO_VOXEL              1   // VoxelUniforms: cascade placement and trace parameters
+#define BIND_UBO_ATLAS              2   // AtlasUniforms: atlas size, sample set, estimator
 
 // Shader storage buffers.
 #define BIND_SSBO_LIGHTS            0   // GpuLight[], every light of the scene
@@ -27,6 +28,21 @@
 #define BIND_TEX_VOXEL_IRRADIANCE   6   // sampler3D rgba16f, rgb = irradiance E (W/m^2)
 #define BIND_TEX_VOXEL_NORMAL       7   // sampler3D rgba16f, xyz = mean normal
 
+// Texture units of the atlas passes (gi/atlas). Atlas layers are R x R, texel (i, j) covers
+// atlas coordinates [i, i+1) x [j, j+1) / R; alpha 0 = no surface.
+#define BIND_TEX_ATLAS_DIRECT       8   // rgba16f, rgb = outgoing direct radiance of the surface,
+                                        // rho/pi * E_dir + L_emitted (W/(m^2 sr)), a = coverage
+#define BIND_TEX_ATLAS_NORMAL       9   // rgba16f, xyz = unit normal, w = 1 if double-sided
+#define BIND_TEX_ATLAS_POSITION     10  // rgba32f, xyz = world position (m), w = surface area the
+                                        // texel stands for as a gather sample (m^2); 0 marks
+                                        // texels written only by conservative rasterisation
+#define BIND_TEX_ATLAS_ALBEDO       11  // rgba16f, rgb = albedo rho (linear), a = coverage
+#define BIND_TEX_ATLAS_SAMPLES      12  // rg32f, N x 1 Hammersley points in [0,1)^2
+#define BIND_TEX_ATLAS_SUMS         13  // rgba32f, gather sums over every sample set so far,
+                                        // a = 1 where a receiver was written
+#define BIND_TEX_ATLAS_LIT          14  // rgba16f, rgb = E_ind (W/m^2), dilated into the gutters;
+                                        // a = 1 surface, 0.5 dilated, 0 empty
+
 // Image units (imageLoad/Store/atomics) of the voxel passes.
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
 #define BIND_IMG_VOXEL_NORMAL       1   // rgba16f, running average of normals, w = unused
@@ -41,12 +57,25 @@
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
 
+#define ATLAS_ESTIMATOR_AREA        0   // L cos cos / r^2 x sample area: the rendering equation
+#define ATLAS_ESTIMATOR_MERZ2010    1   // the thesis' eq. 9: L cos(theta_x) x 2 pi / N
+#define ATLAS_VISIBILITY_NONE       0   // senders are never occluded (the thesis)
+#define ATLAS_VISIBILITY_VOXEL      1   // ray march through the voxel occupancy
+#define ATLAS_VIEW_DIRECT           0   // debug views of the atlas layers, seen from the camera
+#define ATLAS_VIEW_NORMAL           1
+#define ATLAS_VIEW_POSITION         2
+#define ATLAS_VIEW_ALBEDO           3
+#define ATLAS_VIEW_INDIRECT         4
+#define ATLAS_VIEW_CHARTS           5
+
 // Vertex attribute locations of the scene's vertex buffer.
 #define ATTR_POSITION               0   // vec3, world space, metres
 #define ATTR_NORMAL                 1   // vec3, world space, unit length
 #define ATTR_TEXCOORD0              2   // vec2
 #define ATTR_TEXCOORD1              3   // vec2
 #define ATTR_COLOR                  4   // vec4, linear RGBA (COLOR_0, white when absent)
+#define ATTR_ATLAS_UV               5   // vec2, atlas coordinate in [0,1]^2 (atlas geometry only)
+#define ATTR_ATLAS_INFO             6   // vec2, x = chart index, y = 1 if double-sided
 
 // Uniform locations set per draw or per view.
 #define LOC_DRAW_MATERIAL           0   // int, index into GpuMaterial[]
@@ -121,7 +150,8 @@ struct VoxelUniforms {                  // std140
                                         // 1 irradiance, 2 normal)
     vec4 injectionAxis;                 // xyz = unit forward axis of the light view
     vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
-                                        // pixel area (m^2), zw = unused
+                                        // pixel area (m^2), z = 1 for max-axis coverage in
+                                        // propagation, w = unused
     mat4 viewProjection;                // injection: world -> clip of the current light view
     vec4 lightIndex;                    // injection: x = index into GpuLight[], yzw = unused
 };
@@ -134,6 +164,16 @@ struct GpuShadow {                      // std430, one per light
                                         //     (perspective) or everywhere (orthographic)
     vec4 bias;                          // x = normal offset in texels, y = PCF radius in
                                         //     texels, z = 1 if orthographic, w = unused
+};
+
+struct AtlasUniforms {                  // std140
+    ivec4 size;                         // x = atlas resolution R (texels per side), y = samples
+                                        // N in the current set, z = ATLAS_ESTIMATOR_*,
+                                        // w = ATLAS_VIEW_* shown by the debug view
+    vec4 sampling;                      // xy = Cranley-Patterson offset of the current set,
+                                        // z = estimator constant (area: R^2 texels per unit
+                                        // square, merz2010: 2 pi), w = 1 / samples accumulated
+    vec4 dilation;                      // x = dilation radius (texels), yzw = unused
 };
 
 #ifdef __cplusplus

@@ -66,7 +66,10 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
         float lod = clamp(log2(diameter / finest), float(available), float(voxelLevels() - 1));
         int level = int(floor(lod));
         float blend = lod - float(level);
-        float stepLength = max(diameter * voxel.trace.z, 0.25 * finest);
+        // Once the cone is wider than the coarsest level's voxels, steps stay one such voxel
+        // long: longer steps would jump over walls the level resolves.
+        float stepLength = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *
+                voxel.trace.z, 0.25 * finest);
         ivec4 texel = ivec4(voxelTexel(p, level), level);
         if (texel == lastTexel) {
             dist += stepLength;
@@ -86,7 +89,13 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
         if (alpha > 0.0) {
             float corrected = 1.0 - pow(1.0 - min(alpha, 0.9999), stepLength / voxelSize);
             vec3 light = s.albedo.rgb / PI * s.irradiance * (corrected / alpha);
-            if (dot(s.normal, dir) > 0.0) light = vec3(0.0);     // back face: occludes only
+            // A voxel facing away from the cone is skipped, as in the thesis: its surface
+            // sends no light this way, and its occlusion would mostly be the cone's own
+            // surface seen from behind (the voxel layer the cone starts in).
+            if (dot(s.normal, dir) > 0.0) {
+                dist += stepLength;
+                continue;
+            }
             if (voxel.trace.w != 0.0) light /= 1.0 + dist * dist; // the thesis' falloff
             radiance += (1.0 - opacity) * light;
             opacity += (1.0 - opacity) * corrected;

@@ -2,7 +2,11 @@
 // makes the per-voxel average a sum over lights).
 // INJECT_FRAGMENT, after each light: adds the light's mean irradiance to the sum over lights
 // (the thesis keeps the mean over lights and multiplies by their count: the same sum).
-// INJECT_AREA, once after all lights: irradiance = summed flux / surface area.
+// INJECT_AREA, once after all lights, over every occupied voxel: the voxel's coverage
+// becomes its surface area in units of its face area (at most 1) and its irradiance the
+// summed flux over max(area, face area). A voxel a surface only grazes thus stays
+// translucent and dim instead of turning into an opaque cube glowing with the flux of a
+// whole light pixel: irradiance and coverage stay premultiplied, as propagation expects.
 // Both clear the helper.
 #include "voxel_common.glsl"
 
@@ -10,15 +14,24 @@ layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_s
 
 layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) uniform image3D voxelHelper;
 layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) uniform image3D voxelIrradiance;
+layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) uniform image3D voxelAlbedo;
 
 void main() {
     ivec3 texel = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(texel, imageSize(voxelHelper)))) return;
     vec4 helper = imageLoad(voxelHelper, texel);
-    if (helper.a == 0.0) return;
     vec4 current = imageLoad(voxelIrradiance, texel);
-    vec3 total = int(voxel.modes.x) == INJECT_AREA ? helper.rgb / max(current.a, 1e-4)
-                                                   : current.rgb + helper.rgb;
+    vec3 total;
+    if (int(voxel.modes.x) == INJECT_AREA) {
+        float area = current.a;
+        if (area <= 0.0) return;
+        vec4 albedo = imageLoad(voxelAlbedo, texel);
+        imageStore(voxelAlbedo, texel, vec4(albedo.rgb, min(area, 1.0)));
+        total = helper.rgb / max(area, 1.0);
+    } else {
+        if (helper.a == 0.0) return;
+        total = current.rgb + helper.rgb;
+    }
     // Half floats overflow above 65504 W/m^2: clamp instead of writing Inf.
     imageStore(voxelIrradiance, texel, vec4(min(total, vec3(65000.0)), current.a));
     imageStore(voxelHelper, texel, vec4(0.0));

@@ -4,6 +4,13 @@
 // distinct from an empty one), coverage and irradiance are averaged over all 8 (so both are
 // premultiplied by coverage), normals weighted by coverage. One dispatch per level, 8^3
 // work groups, (v/2)^3 invocations.
+//
+// With voxel.coverage_max_axis (modes.z = 1) the coarse coverage is instead the opacity a
+// ray meets along the most opaque axis: per axis, the mean over the 4 columns of
+// 1 - (1 - a)(1 - b) for the column's two voxels, maximised over the axes. A wall filling one
+// of the two layers then stays opaque at every level instead of halving its coverage per
+// level (which lets cones see through walls and dims what they do see); irradiance is
+// rescaled by the same factor so emission per covered area is unchanged.
 #include "voxel_common.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
@@ -20,9 +27,11 @@ void main() {
     ivec3 fineBase = coarse * 2 + ivec3(0, 0, (level - 1) * v);
     vec4 albedo = vec4(0.0), irradiance = vec4(0.0);
     vec3 normal = vec3(0.0);
+    float coverage[8];
     for (int i = 0; i < 8; ++i) {
         ivec3 fine = fineBase + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
         vec4 a = imageLoad(voxelAlbedo, fine);
+        coverage[i] = clamp(a.a, 0.0, 1.0);
         albedo.rgb += a.rgb * a.a;
         albedo.a += a.a;
         irradiance += imageLoad(voxelIrradiance, fine);
@@ -32,6 +41,20 @@ void main() {
     else albedo.rgb = vec3(0.0);
     albedo.a /= 8.0;
     irradiance /= 8.0;
+    if (voxel.modes.z != 0.0 && albedo.a > 0.0) {
+        float axisOpacity = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            int step = 1 << axis;   // index offset of the column's second voxel
+            float sum = 0.0;
+            for (int i = 0; i < 8; ++i) {
+                if ((i & step) != 0) continue;
+                sum += 1.0 - (1.0 - coverage[i]) * (1.0 - coverage[i + step]);
+            }
+            axisOpacity = max(axisOpacity, sum / 4.0);
+        }
+        irradiance.rgb *= axisOpacity / albedo.a;
+        albedo.a = axisOpacity;
+    }
     float len = length(normal);
     ivec3 target = coarse + ivec3(v / 4, v / 4, v / 4 + level * v);
     imageStore(voxelAlbedo, target, albedo);

@@ -58,10 +58,13 @@ std::optional<Command> parseCommand(const std::string& word) {
 
 } // namespace
 
-std::string defaultScenePath() {
+std::string dataDirectory() {
     const char* env = std::getenv("VOXATLAS_DATA_DIR");
-    const std::string root = env && *env ? env : VOXATLAS_DATA_DIR;
-    return root + "/assets/cornell_box/cornell_box.gltf";
+    return env && *env ? env : VOXATLAS_DATA_DIR;
+}
+
+std::string defaultScenePath() {
+    return dataDirectory() + "/assets/cornell_box/cornell_box.gltf";
 }
 
 bool parseLightSpec(const std::string& text, scene::Light& light, std::string& error) {
@@ -333,7 +336,17 @@ std::string usage(Command command) {
         return "usage: voxatlas info SCENE\n"
                "Prints counts, bounds, lights, cameras and the memory plan of a glTF scene.\n";
     case Command::Bench:
-        return "usage: voxatlas bench [--scene SCENE] [--quick] [--out-dir DIR] [--set key=value ...]\n";
+        return "usage: voxatlas bench [--scene SCENE] [--quick] [--out-dir DIR] [--gl egl|osmesa]\n"
+               "        [--set key=value ...]\n"
+               "\n"
+               "Sweeps the voxel and atlas GI settings on the Cornell box and on Sponza (--scene,\n"
+               "else $VOXATLAS_SPONZA, else ../shared/assets/sponza/Sponza.gltf next to the source\n"
+               "tree), times every pass, scores the indirect and final images against the cached\n"
+               "ground truth, and writes bench.csv, bench.md and pareto.png to --out-dir\n"
+               "(default docs/results). --quick: smaller images, 3 timed frames, 64 spp\n"
+               "reference, no 2048^2 / 400-sample atlas; the full sweep: 7 frames, 256 spp.\n"
+               "--set changes the base settings under every configuration\n"
+               "(material.specular is always 0).\n";
     default:
         return "usage: voxatlas [view] [SCENE] [--width W --height H] [--camera ...] [--light ...]\n"
                "        [--frames N] [--screenshot F.png] [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"

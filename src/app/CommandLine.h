@@ -58,6 +58,10 @@ struct Config {
 
 [[nodiscard]] std::string usage(Command command);
 
+// The source tree holding assets/, shaders/ and scripts/: $VOXATLAS_DATA_DIR, else the one
+// this build was configured from.
+[[nodiscard]] std::string dataDirectory();
+
 // Path of the default scene (assets/cornell_box/cornell_box.gltf in the source tree).
 [[nodiscard]] std::string defaultScenePath();
 

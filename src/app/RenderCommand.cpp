@@ -6,6 +6,8 @@
 #include "gl/ShaderLibrary.h"
 #include "platform/GlContext.h"
 #include "render/FrameRenderer.h"
+#include "reference/ProgressBar.h"
+#include "reference/ReferenceCache.h"
 #include "render/ImageIO.h"
 
 #include <cstdio>
@@ -19,16 +21,58 @@ int fail(int status, const std::string& message) {
     return status;
 }
 
+// The ground-truth path tracer: no GL context, results cached on disk by content.
+int runReference(const Config& config, const scene::Scene& scene, const render::CameraView& camera,
+        int width, int height) {
+    if (render::isDebugView(config.output)) {
+        return fail(2, std::string("--output ") + render::outputComponentName(config.output) +
+                " is a GPU technique's debug view; the reference renders final, direct or indirect");
+    }
+    const reference::ReferenceCache cache(reference::ReferenceCache::defaultDirectory());
+    reference::CachedRenderStatus status;
+    std::string error;
+    reference::ProgressBar bar("reference " + std::to_string(width) + "x" + std::to_string(height) +
+            ", " + std::to_string(config.settings.reference.spp) + " spp");
+    const reference::ReferenceResult result = reference::renderReferenceCached(scene, camera, width,
+            height, config.settings.reference, cache, status, error, bar.callback());
+    bar.finish();
+    if (result.final.empty()) return fail(1, error);
+    if (!status.storeError.empty()) std::fprintf(stderr, "voxatlas render: %s\n", status.storeError.c_str());
+    const render::Image& image = config.output == render::OutputComponent::Direct ? result.direct
+                                 : config.output == render::OutputComponent::Indirect ? result.indirect
+                                                                                      : result.final;
+    std::vector<std::string> written;
+    auto cleanUp = [&] {
+        for (const std::string& path : written) std::filesystem::remove(path);
+    };
+    if (!render::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
+    written.push_back(config.outPath);
+    if (!config.hdrPath.empty()) {
+        if (!render::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
+        written.push_back(config.hdrPath);
+    }
+    if (!config.timingsPath.empty()) {
+        TimingsReport report{config.scenePath, "reference", "cpu", "embree", "wall-clock", width,
+                height, 1, {{"reference/path_trace", result.seconds * 1e3, result.seconds * 1e3,
+                                    result.seconds * 1e3, 1}},
+                {}};
+        if (!writeTimingsJson(config.timingsPath, report, error)) return cleanUp(), fail(1, error);
+    }
+    std::fprintf(stderr,
+            "voxatlas render: wrote %s (%dx%d, reference, %d spp, %d bounce(s), %s, noise %.2f%% "
+            "final / %.2f%% indirect)\n",
+            config.outPath.c_str(), width, height, result.spp, result.bounces,
+            status.hit ? "from cache" : ("rendered in " + std::to_string(result.seconds) + " s").c_str(),
+            100.0 * result.noise.final, 100.0 * result.noise.indirect);
+    return 0;
+}
+
 } // namespace
 
 int runRender(const Config& config) {
     std::string error;
     for (const std::string* path : {&config.outPath, &config.hdrPath, &config.timingsPath}) {
         if (!path->empty() && !render::checkWritable(*path, error)) return fail(2, error);
-    }
-    if (config.mode == render::GiMode::Atlas || config.mode == render::GiMode::Reference) {
-        return fail(2, std::string("--mode ") + render::giModeName(config.mode) +
-                " is not available in this build yet (available: direct, voxel)");
     }
 
     scene::Scene scene;
@@ -38,6 +82,7 @@ int runRender(const Config& config) {
     const int height = config.height > 0 ? config.height : 512;
     render::CameraView camera;
     if (!selectCamera(config, scene, float(width) / float(height), camera, error)) return fail(2, error);
+    if (config.mode == render::GiMode::Reference) return runReference(config, scene, camera, width, height);
 
     std::string notice;
     auto context = platform::createHeadlessContext(config.gl, !config.glExplicit, error, notice);

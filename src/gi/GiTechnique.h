@@ -22,7 +22,17 @@
 namespace gi {
 
 // Views a technique can show instead of the final image (--output and viewer hotkeys).
-enum class DebugView { None, VoxelAlbedo, VoxelIrradiance, VoxelNormal };
+enum class DebugView {
+    None, VoxelAlbedo, VoxelIrradiance, VoxelNormal,
+    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts
+};
+
+// A voxel occupancy another technique can test visibility against (the atlas gather's
+// atlas.visibility=voxel): the cascade layout of shaders/voxel/voxel_common.glsl.
+struct OccupancyVolume {
+    const gl::Texture& coverage;       // sampler3D rgba16f at BIND_TEX_VOXEL_ALBEDO, a = coverage
+    const gl::Buffer& voxelUniforms;   // VoxelUniforms (std140) at BIND_UBO_VOXEL
+};
 
 struct GiFrameInputs {
     const scene::GpuScene& scene;          // world-space geometry, materials, lights
@@ -32,6 +42,7 @@ struct GiFrameInputs {
     const render::CameraView& camera;
     glm::ivec2 outputSize;                 // full-resolution render size, pixels
     DebugView debugView = DebugView::None;
+    const OccupancyVolume* occupancy = nullptr;   // voxel occupancy of this frame, if any
 };
 
 struct GiOutputs {

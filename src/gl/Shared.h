@@ -18,3 +18,4 @@ static_assert(sizeof(gi::shader::GpuMaterial) == 48, "GpuMaterial std430 layout 
 static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
 static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 6 + 64 + 16,
         "VoxelUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::AtlasUniforms) == 3 * 16, "AtlasUniforms std140 layout drifted");

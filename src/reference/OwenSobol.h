@@ -1,12 +1,13 @@
 // Owen-scrambled Sobol' points in 6 dimensions, for the reference renderer's pixel position
-// (dimensions 0, 1), first bounce direction (2, 3) and first light's emission direction (4, 5). Every point is uniformly distributed
-// (so estimates stay unbiased), and the first 2^m points of one scrambled sequence are
-// stratified in every dimension and, for dimensions (0, 1), in every 2D elementary interval,
-// which removes most of the noise of the pixel average and the one-bounce integral
-// (PBRT 3rd ed. 7.4 "(0,2)-sequence sampler"). Scrambling is hash-based nested uniform
-// scrambling with a shuffled index: B. Burley, "Practical Hash-based Owen Scrambling", JCGT
-// 9(4), 2020. Direction numbers: S. Joe and F. Y. Kuo, new-joe-kuo-6.21201 (dimensions 2-6 of
-// their table; dimension 1 is the van der Corput sequence).
+// (dimensions 0, 1), first bounce direction (2, 3) and first light's emission direction
+// (4, 5). Every point is uniformly distributed (so estimates stay unbiased), and the first 2^m
+// points of one scrambled sequence are stratified in every dimension and, for dimensions
+// (0, 1), in every 2D elementary interval, which removes most of the noise of the pixel
+// average and of the one-bounce integral (PBRT 3rd ed. 7.4 "(0,2)-sequence sampler").
+// Scrambling is hash-based nested uniform scrambling with a shuffled index: B. Burley,
+// "Practical Hash-based Owen Scrambling", JCGT 9(4), 2020. Direction numbers: S. Joe and
+// F. Y. Kuo, new-joe-kuo-6.21201 (dimensions 2-6 of their table; dimension 1 is the van der
+// Corput sequence).
 #pragma once
 
 #include <cstdint>

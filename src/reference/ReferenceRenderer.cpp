@@ -22,8 +22,8 @@ namespace {
 
 constexpr int kTileSize = 16;
 // Ray origins move off a surface along its geometric normal by this fraction of the largest
-// coordinate magnitude M of the hit point and its triangle's corners. The interpolated hit
-// point and Embree's single-precision plane test both err by a few ulps of M (2^-23 M each),
+// coordinate magnitude M of the triangle's corners (which bounds the hit point's). The
+// interpolated hit point and Embree's single-precision plane test both err by a few ulps of M,
 // so 2^-17 M = 64 ulps keeps every continuation ray off its own triangle, while moving the
 // origin so little (8e-6 M) that it biases irradiance by far less than the test tolerances.
 constexpr float kRelativeOffset = 1.0f / 131072.0f;
@@ -61,7 +61,10 @@ int wrapIndex(int i, int size, int wrap) {
 // Bilinear lookup with the texture's wrap modes; colour channels of sRGB textures are decoded
 // to linear before filtering (as an SRGB8_ALPHA8 texture on the GPU), alpha is linear.
 glm::vec4 sampleTexture(const scene::Texture& texture, glm::vec2 uv) {
-    if (texture.width <= 0 || texture.height <= 0) return glm::vec4(1.0f);
+    if (texture.width <= 0 || texture.height <= 0 ||
+            texture.rgba8.size() < std::size_t(texture.width) * std::size_t(texture.height) * 4) {
+        return glm::vec4(1.0f);
+    }
     const float x = wrapCoordinate(uv.x, texture.wrapS) * float(texture.width) - 0.5f;
     const float y = wrapCoordinate(uv.y, texture.wrapT) * float(texture.height) - 0.5f;
     const float fx = std::floor(x), fy = std::floor(y);
@@ -149,6 +152,16 @@ struct PathSample {
 
 struct EmbreeState;
 
+// What shading needs per triangle, precomputed so that a hit costs no cross products.
+struct TriangleInfo {
+    glm::vec3 normal{0.0f};       // unit geometric normal (world space), 0 when degenerate
+    float offset = 0.0f;          // ray-origin offset: kRelativeOffset x largest |coordinate|
+    std::uint32_t material = 0;   // index into EmbreeState::materials
+    std::uint32_t flags = 0;      // kSmoothNormals | kVertexColors
+};
+constexpr std::uint32_t kSmoothNormals = 1;   // vertex normals differ from the geometric one
+constexpr std::uint32_t kVertexColors = 2;    // some corner has COLOR_0 other than white
+
 // User data of the alpha-masked Embree geometry.
 struct FilterData {
     const EmbreeState* state = nullptr;
@@ -163,7 +176,7 @@ struct EmbreeState {
     std::vector<glm::vec2> texcoords[2];
     std::vector<glm::vec4> colors;        // linear RGBA, white when the primitive has none
     std::vector<glm::uvec3> triangles;    // global vertex indices; opaque first, then masked
-    std::vector<std::uint32_t> triangleMaterial;   // index into materials
+    std::vector<TriangleInfo> triangleInfo;        // per triangle, same order
     std::vector<ShadingMaterial> materials;        // scene materials + default white last
     std::uint32_t firstTriangle[2] = {0, 0};       // per Embree geometry id
     FilterData maskFilter;
@@ -185,10 +198,13 @@ struct EmbreeState {
     }
 
     glm::vec4 baseColor(std::uint32_t triangle, float u, float v) const {
-        const ShadingMaterial& m = materials[triangleMaterial[triangle]];
-        const glm::uvec3 t = triangles[triangle];
-        glm::vec4 color = m.baseColorFactor *
-                ((1.0f - u - v) * colors[t.x] + u * colors[t.y] + v * colors[t.z]);
+        const TriangleInfo& info = triangleInfo[triangle];
+        const ShadingMaterial& m = materials[info.material];
+        glm::vec4 color = m.baseColorFactor;
+        if (info.flags & kVertexColors) {
+            const glm::uvec3 t = triangles[triangle];
+            color *= (1.0f - u - v) * colors[t.x] + u * colors[t.y] + v * colors[t.z];
+        }
         if (m.baseColorTexture) {
             color *= sampleTexture(*m.baseColorTexture,
                     texcoord(triangle, m.baseColorTexCoord, u, v));
@@ -197,7 +213,7 @@ struct EmbreeState {
     }
 
     bool cutOut(std::uint32_t triangle, float u, float v) const {
-        const ShadingMaterial& m = materials[triangleMaterial[triangle]];
+        const ShadingMaterial& m = materials[triangleInfo[triangle].material];
         return m.mask && baseColor(triangle, u, v).a < m.alphaCutoff;
     }
 };
@@ -245,6 +261,7 @@ void fillState(const scene::Scene& scene, EmbreeState& state) {
     state.materials.push_back(ShadingMaterial{});
 
     std::vector<glm::uvec3> masked;
+    std::vector<std::uint32_t> material;
     std::vector<std::uint32_t> maskedMaterial;
     for (const scene::Instance& instance : scene.instances) {
         const scene::Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
@@ -266,28 +283,49 @@ void fillState(const scene::Scene& scene, EmbreeState& state) {
             state.colors.push_back(i < primitive.colors.size() ? primitive.colors[i]
                                                                : glm::vec4(1.0f));
         }
-        const std::uint32_t material =
+        const std::uint32_t primitiveMaterial =
                 primitive.material >= 0 && std::size_t(primitive.material) < scene.materials.size()
                         ? std::uint32_t(primitive.material)
                         : defaultMaterial;
-        const bool isMasked = state.materials[material].mask;
+        const bool isMasked = state.materials[primitiveMaterial].mask;
         for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
             const glm::uvec3 triangle(base + primitive.indices[t], base + primitive.indices[t + 1],
                     base + primitive.indices[t + 2]);
             if (isMasked) {
                 masked.push_back(triangle);
-                maskedMaterial.push_back(material);
+                maskedMaterial.push_back(primitiveMaterial);
             } else {
                 state.triangles.push_back(triangle);
-                state.triangleMaterial.push_back(material);
+                material.push_back(primitiveMaterial);
             }
         }
     }
     state.firstTriangle[0] = 0;
     state.firstTriangle[1] = std::uint32_t(state.triangles.size());
     state.triangles.insert(state.triangles.end(), masked.begin(), masked.end());
-    state.triangleMaterial.insert(state.triangleMaterial.end(), maskedMaterial.begin(),
-            maskedMaterial.end());
+    material.insert(material.end(), maskedMaterial.begin(), maskedMaterial.end());
+
+    state.triangleInfo.resize(state.triangles.size());
+    for (std::size_t i = 0; i < state.triangles.size(); ++i) {
+        const glm::uvec3 t = state.triangles[i];
+        const glm::vec3& p0 = state.positions[t.x];
+        const glm::vec3& p1 = state.positions[t.y];
+        const glm::vec3& p2 = state.positions[t.z];
+        TriangleInfo& info = state.triangleInfo[i];
+        info.material = material[i];
+        const glm::vec3 n = glm::cross(p1 - p0, p2 - p0);
+        const float length = glm::length(n);
+        info.normal = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f);
+        info.offset = std::max(kRelativeOffset * std::max({maxAbs(p0), maxAbs(p1), maxAbs(p2)}),
+                std::numeric_limits<float>::min());
+        for (const std::uint32_t vertex : {t.x, t.y, t.z}) {
+            // Normals within ~0.01 degrees of the face normal (either side) shade as flat.
+            if (std::abs(glm::dot(state.normals[vertex], info.normal)) < 0.99999999f) {
+                info.flags |= kSmoothNormals;
+            }
+            if (state.colors[vertex] != glm::vec4(1.0f)) info.flags |= kVertexColors;
+        }
+    }
 }
 
 // Adds triangles [first, first + count) as one Embree geometry; returns false on an Embree error.
@@ -327,17 +365,30 @@ bool addGeometry(EmbreeState& state, std::uint32_t first, std::uint32_t count, b
     return true;
 }
 
-} // namespace
+// False for lights that emit nothing or whose numbers are not finite (never NaN pixels).
+bool usableLight(const scene::Light& light, const glm::vec3& radiant) {
+    const bool finite = std::isfinite(radiant.x) && std::isfinite(radiant.y) &&
+                        std::isfinite(radiant.z) && std::isfinite(light.position.x) &&
+                        std::isfinite(light.position.y) && std::isfinite(light.position.z);
+    return finite && maxComponent(radiant) > 0.0f;
+}
 
-namespace {
+// Unit vector along v; false when v is zero or not finite (a light without a direction).
+bool normalized(const glm::vec3& v, glm::vec3& unit) {
+    const float length = glm::length(v);
+    if (!(length > 0.0f) || !std::isfinite(length)) return false;
+    unit = v / length;
+    return true;
+}
 
 // Direction density (per steradian) with which lightSubpathDirection samples a light's
 // emission: uniform over the sphere (point) or over the outer cone (spot). 0 for lights whose
 // emission cannot be sampled (directional, or a spot with a zero-width cone): those are
 // reached by next-event estimation alone.
 float emissionPdf(const scene::Light& light) {
+    glm::vec3 axis;
     if (light.type == scene::LightType::Point) return 1.0f / (4.0f * glm::pi<float>());
-    if (light.type == scene::LightType::Spot) {
+    if (light.type == scene::LightType::Spot && normalized(light.direction, axis)) {
         const float solidAngle = glm::two_pi<float>() *
                 (1.0f - std::cos(std::clamp(light.outerConeAngle, 0.0f, glm::pi<float>())));
         return solidAngle > 1e-6f ? 1.0f / solidAngle : 0.0f;
@@ -351,7 +402,7 @@ glm::vec3 lightSubpathDirection(const scene::Light& light, float u1, float u2) {
     if (light.type == scene::LightType::Spot) {
         const float cosOuter = std::cos(std::clamp(light.outerConeAngle, 0.0f, glm::pi<float>()));
         cosTheta = 1.0f - u1 * (1.0f - cosOuter);
-        axis = glm::normalize(light.direction);
+        axis = glm::normalize(light.direction);   // non-zero: emissionPdf > 0
     }
     const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
     const float phi = glm::two_pi<float>() * u2;
@@ -366,8 +417,10 @@ glm::vec3 lightSubpathDirection(const scene::Light& light, float u1, float u2) {
 // 1 (directional). False when the light cannot reach p (on it, or outside a spot's cone).
 bool lightGeometry(const scene::Light& light, const glm::vec3& p, glm::vec3& wi,
         float& distance, float& factor) {
+    glm::vec3 axis(0.0f);
+    if (light.type != scene::LightType::Point && !normalized(light.direction, axis)) return false;
     if (light.type == scene::LightType::Directional) {
-        wi = -glm::normalize(light.direction);
+        wi = -axis;
         distance = std::numeric_limits<float>::infinity();
         factor = 1.0f;
         return true;
@@ -379,7 +432,7 @@ bool lightGeometry(const scene::Light& light, const glm::vec3& p, glm::vec3& wi,
     wi = toLight / distance;
     factor = 1.0f / distance2;
     if (light.type == scene::LightType::Spot) {
-        const float cosAlpha = glm::dot(glm::normalize(light.direction), -wi);
+        const float cosAlpha = glm::dot(axis, -wi);
         const float cosOuter = std::cos(light.outerConeAngle);
         const float cosInner = std::cos(light.innerConeAngle);
         float s = 0.0f;
@@ -420,7 +473,15 @@ public:
     PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
             const render::CameraView& camera, int width, int height, int bounces)
         : mState(state), mLights(lights), mWidth(width), mHeight(height), mBounces(bounces) {
-        mClipToWorld = glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
+        const glm::dmat4 clipToWorld =
+                glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
+        mNear[0] = clipToWorld * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+        mFar[0] = clipToWorld * glm::dvec4(0.0, 0.0, 1.0, 1.0);
+        for (int axis = 0; axis < 2; ++axis) {
+            glm::dvec4 unit(0.0);
+            unit[axis] = 1.0;
+            mNear[axis + 1] = mFar[axis + 1] = clipToWorld * unit;
+        }
         for (const scene::Light& light : lights) mEmissionPdf.push_back(emissionPdf(light));
     }
 
@@ -496,8 +557,8 @@ private:
     RTCRayHit cameraRay(float x, float y) const {
         const double ndcX = 2.0 * double(x) / double(mWidth) - 1.0;
         const double ndcY = 1.0 - 2.0 * double(y) / double(mHeight);
-        const glm::dvec4 nearH = mClipToWorld * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-        const glm::dvec4 farH = mClipToWorld * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+        const glm::dvec4 nearH = mNear[0] + ndcX * mNear[1] + ndcY * mNear[2];
+        const glm::dvec4 farH = mFar[0] + ndcX * mFar[1] + ndcY * mFar[2];
         const glm::dvec3 nearP = glm::dvec3(nearH) / nearH.w;
         const glm::dvec3 farP = glm::dvec3(farH) / farH.w;
         const glm::dvec3 span = farP - nearP;
@@ -518,25 +579,23 @@ private:
         const glm::vec3& p1 = mState.positions[t.y];
         const glm::vec3& p2 = mState.positions[t.z];
         const glm::vec3 incoming(-rayHit.ray.dir_x, -rayHit.ray.dir_y, -rayHit.ray.dir_z);
+        const TriangleInfo& info = mState.triangleInfo[triangle];
 
         surface.position = w * p0 + u * p1 + v * p2;
-        glm::vec3 ng = glm::cross(p1 - p0, p2 - p0);
-        const float ngLength = glm::length(ng);
-        ng = ngLength > 0.0f ? ng / ngLength : incoming;
+        glm::vec3 ng = info.normal == glm::vec3(0.0f) ? incoming : info.normal;
         if (glm::dot(ng, incoming) < 0.0f) ng = -ng;
-        glm::vec3 ns = w * mState.normals[t.x] + u * mState.normals[t.y] + v * mState.normals[t.z];
-        const float nsLength = glm::length(ns);
-        ns = nsLength > 0.0f && std::isfinite(nsLength) ? ns / nsLength : ng;
-        if (glm::dot(ns, incoming) < 0.0f) ns = -ns;
+        glm::vec3 ns = ng;
+        if (info.flags & kSmoothNormals) {
+            ns = w * mState.normals[t.x] + u * mState.normals[t.y] + v * mState.normals[t.z];
+            const float nsLength = glm::length(ns);
+            ns = nsLength > 0.0f && std::isfinite(nsLength) ? ns / nsLength : ng;
+            if (glm::dot(ns, incoming) < 0.0f) ns = -ns;
+        }
         surface.geometricNormal = ng;
         surface.shadingNormal = ns;
+        surface.offset = info.offset;
 
-        const float magnitude =
-                std::max({maxAbs(surface.position), maxAbs(p0), maxAbs(p1), maxAbs(p2)});
-        surface.offset = std::max(kRelativeOffset * magnitude,
-                std::numeric_limits<float>::min());
-
-        const ShadingMaterial& m = mState.materials[mState.triangleMaterial[triangle]];
+        const ShadingMaterial& m = mState.materials[info.material];
         surface.albedo = glm::vec3(mState.baseColor(triangle, u, v));
         surface.emission = m.emissiveFactor;
         if (m.emissiveTexture && maxComponent(m.emissiveFactor) > 0.0f) {
@@ -566,7 +625,7 @@ private:
         for (std::size_t i = 0; i < mLights.size(); ++i) {
             const scene::Light& light = mLights[i];
             const glm::vec3 radiant = light.color * light.intensity;
-            if (maxComponent(radiant) <= 0.0f) continue;
+            if (!usableLight(light, radiant)) continue;
             glm::vec3 wi;
             float distance = 0.0f, factor = 0.0f;
             if (!lightGeometry(light, surface.position, wi, distance, factor)) continue;
@@ -601,9 +660,10 @@ private:
             const float u1 = i == 0 ? u[0] : rng.nextFloat();
             const float u2 = i == 0 ? u[1] : rng.nextFloat();
             const glm::vec3 radiant = light.color * light.intensity;
-            if (maxComponent(radiant) <= 0.0f) continue;
+            if (!usableLight(light, radiant)) continue;
             const glm::vec3 direction = lightSubpathDirection(light, u1, u2);
-            RTCRayHit rayHit = ray(light.position, direction, std::numeric_limits<float>::infinity());
+            RTCRayHit rayHit =
+                    ray(light.position, direction, std::numeric_limits<float>::infinity());
             ++counts.light;
             rtcIntersect1(mState.rtcScene, &context, &rayHit);
             if (!interact(rayHit, vertex.surface)) continue;
@@ -667,7 +727,9 @@ private:
     const std::vector<scene::Light>& mLights;
     std::vector<float> mEmissionPdf;   // per light, emissionPdf()
     int mWidth, mHeight, mBounces;
-    glm::dmat4 mClipToWorld{1.0};
+    // Clip-to-world images of (ndcX, ndcY, -1 | +1, 1) = [0] + ndcX [1] + ndcY [2], homogeneous.
+    glm::dvec4 mNear[3];
+    glm::dvec4 mFar[3];
 };
 
 // Per-pixel half means, kept until the noise estimate is computed.
@@ -675,6 +737,41 @@ struct HalfImages {
     std::vector<glm::vec3> direct[2];
     std::vector<glm::vec3> indirect[2];
 };
+
+// One pixel's estimate: the mean radiance of each half of its paths.
+struct PixelEstimate {
+    glm::dvec3 direct[2];
+    glm::dvec3 indirect[2];
+    int hits = 0;   // paths whose camera ray hit geometry
+};
+
+// Traces pathsPerHalf[h] paths for each half h of pixel (x, y). Half h draws from its own
+// streams seeded by (seed, pixel, h): Owen-scrambled Sobol' points for the pixel position,
+// first bounce and first light, PCG32 for everything else.
+PixelEstimate renderPixel(const PathTracer& tracer, int x, int y, std::uint64_t seed,
+        std::size_t pixel, const int pathsPerHalf[2], std::vector<LightVertex>& lightVertices,
+        RayCounts& rays) {
+    PixelEstimate estimate;
+    const std::uint64_t stream = mix64(seed ^ std::uint64_t(pixel));
+    for (int h = 0; h < 2; ++h) {
+        Pcg32 rng(stream, std::uint64_t(h));
+        const OwenSobolSampler sampler(std::uint32_t(mix64(stream + std::uint64_t(h))));
+        glm::dvec3 direct(0.0), indirect(0.0);
+        for (int s = 0; s < pathsPerHalf[h]; ++s) {
+            float u[kSobolDimensions];
+            sampler.point(std::uint32_t(s), u);
+            const PathSample path =
+                    tracer.trace(float(x) + u[0], float(y) + u[1], u + 2, rng, lightVertices, rays);
+            direct += glm::dvec3(path.direct);
+            indirect += glm::dvec3(path.indirect);
+            estimate.hits += path.hit ? 1 : 0;
+        }
+        const double n = double(std::max(pathsPerHalf[h], 1));
+        estimate.direct[h] = direct / n;
+        estimate.indirect[h] = indirect / n;
+    }
+    return estimate;
+}
 
 double relativeNoise(const HalfImages& halves, const render::Image& combined,
         const std::vector<float>& coverage, bool directPart, bool indirectPart, int spp) {
@@ -787,35 +884,20 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
-                    glm::dvec3 direct(0.0), indirect(0.0);
-                    int hits = 0;
+                    const PixelEstimate e = renderPixel(tracer, x, y, seed, pixel, pathsPerHalf,
+                            lightVertices, rays);
+                    const double wA = double(pathsPerHalf[0]) / spp;
+                    const double wB = double(pathsPerHalf[1]) / spp;
+                    const glm::dvec3 direct = wA * e.direct[0] + wB * e.direct[1];
+                    const glm::dvec3 indirect = wA * e.indirect[0] + wB * e.indirect[1];
+                    result.direct.set(x, y, glm::vec3(direct));
+                    result.indirect.set(x, y, glm::vec3(indirect));
+                    result.final.set(x, y, glm::vec3(direct + indirect));
+                    result.coverage[pixel] = float(double(e.hits) / double(spp));
                     for (int h = 0; h < 2; ++h) {
-                        const std::uint64_t stream = mix64(seed ^ std::uint64_t(pixel));
-                        Pcg32 rng(stream, std::uint64_t(h));
-                        const OwenSobolSampler sampler(
-                                std::uint32_t(mix64(stream + std::uint64_t(h))));
-                        glm::dvec3 halfDirect(0.0), halfIndirect(0.0);
-                        for (int s = 0; s < pathsPerHalf[h]; ++s) {
-                            float u[kSobolDimensions];
-                            sampler.point(std::uint32_t(s), u);
-                            const PathSample path = tracer.trace(float(x) + u[0],
-                                    float(y) + u[1], u + 2, rng, lightVertices, rays);
-                            halfDirect += glm::dvec3(path.direct);
-                            halfIndirect += glm::dvec3(path.indirect);
-                            hits += path.hit ? 1 : 0;
-                        }
-                        direct += halfDirect;
-                        indirect += halfIndirect;
-                        if (pathsPerHalf[h] > 0) {
-                            halves.direct[h][pixel] = glm::vec3(halfDirect / double(pathsPerHalf[h]));
-                            halves.indirect[h][pixel] =
-                                    glm::vec3(halfIndirect / double(pathsPerHalf[h]));
-                        }
+                        halves.direct[h][pixel] = glm::vec3(e.direct[h]);
+                        halves.indirect[h][pixel] = glm::vec3(e.indirect[h]);
                     }
-                    result.direct.set(x, y, glm::vec3(direct / double(spp)));
-                    result.indirect.set(x, y, glm::vec3(indirect / double(spp)));
-                    result.final.set(x, y, glm::vec3((direct + indirect) / double(spp)));
-                    result.coverage[pixel] = float(double(hits) / double(spp));
                 }
             }
             const std::lock_guard<std::mutex> lock(progressMutex);
@@ -847,7 +929,8 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
     result.noise.indirect =
             relativeNoise(halves, result.indirect, result.coverage, false, true, spp);
     result.noise.final = relativeNoise(halves, result.final, result.coverage, true, true, spp);
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

@@ -57,8 +57,10 @@ struct RayCounts {
 // and (A - B)^2 estimates Var(A - B) without bias. Hence
 //     noise(C) = sqrt(sum (A - B)^2 nA nB / spp^2) / sqrt(sum C^2),
 // which for even spp is RMSE(A, B) / 2 relative to C: A - B has sqrt(2) times the noise of a
-// half, and C has 1/sqrt(2) of it. NaN when spp < 2 or there is no geometry pixel; 0 when the
-// component is zero on every geometry pixel (e.g. no indirect light).
+// half, and C has 1/sqrt(2) of it. For even spp this needs only that A and B are independent
+// and identically distributed, so it holds for the stratified samples used here; for odd spp
+// it assumes a half's variance falls as 1/n. NaN when spp < 2 or there is no geometry pixel;
+// 0 when the component is zero on every geometry pixel (e.g. no indirect light).
 struct NoiseEstimate {
     double direct = 0.0;
     double indirect = 0.0;

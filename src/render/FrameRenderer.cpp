@@ -1,5 +1,6 @@
 #include "render/FrameRenderer.h"
 
+#include "gi/atlas/AtlasGi.h"
 #include "gi/voxel/VoxelizationManager.h"
 #include "gl/Shared.h"
 
@@ -13,7 +14,24 @@ constexpr std::pair<OutputComponent, const char*> kOutputNames[] = {
         {OutputComponent::Final, "final"}, {OutputComponent::Direct, "direct"},
         {OutputComponent::Indirect, "indirect"}, {OutputComponent::VoxelAlbedo, "voxel-albedo"},
         {OutputComponent::VoxelIrradiance, "voxel-irradiance"},
-        {OutputComponent::VoxelNormal, "voxel-normal"}};
+        {OutputComponent::VoxelNormal, "voxel-normal"},
+        {OutputComponent::AtlasDirect, "atlas-direct"}, {OutputComponent::AtlasNormal, "atlas-normal"},
+        {OutputComponent::AtlasPosition, "atlas-position"},
+        {OutputComponent::AtlasAlbedo, "atlas-albedo"},
+        {OutputComponent::AtlasIndirect, "atlas-indirect"},
+        {OutputComponent::AtlasCharts, "atlas-charts"}};
+
+// The technique view behind each debug output.
+constexpr std::pair<OutputComponent, DebugView> kDebugViews[] = {
+        {OutputComponent::VoxelAlbedo, DebugView::VoxelAlbedo},
+        {OutputComponent::VoxelIrradiance, DebugView::VoxelIrradiance},
+        {OutputComponent::VoxelNormal, DebugView::VoxelNormal},
+        {OutputComponent::AtlasDirect, DebugView::AtlasDirect},
+        {OutputComponent::AtlasNormal, DebugView::AtlasNormal},
+        {OutputComponent::AtlasPosition, DebugView::AtlasPosition},
+        {OutputComponent::AtlasAlbedo, DebugView::AtlasAlbedo},
+        {OutputComponent::AtlasIndirect, DebugView::AtlasIndirect},
+        {OutputComponent::AtlasCharts, DebugView::AtlasCharts}};
 
 } // namespace
 
@@ -38,6 +56,11 @@ const std::vector<OutputComponent>& allOutputComponents() {
         return outputs;
     }();
     return all;
+}
+
+bool isDebugView(OutputComponent output) {
+    return output != OutputComponent::Final && output != OutputComponent::Direct &&
+           output != OutputComponent::Indirect;
 }
 
 bool outputAvailable(OutputComponent output, GiMode mode) {
@@ -84,9 +107,10 @@ bool FrameRenderer::setMode(GiMode mode, std::string& error) {
     std::unique_ptr<GiTechnique> technique;
     if (mode == GiMode::Voxel) {
         technique = std::make_unique<voxel::VoxelizationManager>();
+    } else if (mode == GiMode::Atlas) {
+        technique = std::make_unique<atlas::AtlasGi>();
     } else if (mode != GiMode::Direct) {
-        error = mode == GiMode::Atlas ? "atlas GI is not available in this build yet"
-                                      : "the reference renderer is not a GPU mode";
+        error = "the reference renderer is not a GPU mode";
         return false;
     }
     if (technique && (!technique->init(*mShaders, *mSceneDescription, error) ||
@@ -137,10 +161,10 @@ void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
     mShadows.execute(*mScene, profiler);
     GiOutputs gi;
     if (mGi) {
-        const DebugView debugView = output == OutputComponent::VoxelAlbedo       ? DebugView::VoxelAlbedo
-                                    : output == OutputComponent::VoxelIrradiance ? DebugView::VoxelIrradiance
-                                    : output == OutputComponent::VoxelNormal     ? DebugView::VoxelNormal
-                                                                                 : DebugView::None;
+        DebugView debugView = DebugView::None;
+        for (const auto& [component, view] : kDebugViews) {
+            if (component == output && outputAvailable(output, mMode)) debugView = view;
+        }
         mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView}, profiler);
         gi = mGi->outputs();
         if (gi.indirect) {

@@ -23,13 +23,18 @@ namespace gi::render {
 
 enum class GiMode { Direct, Voxel, Atlas, Reference };
 // What a frame shows: a radiance component, or a technique's debug view.
-enum class OutputComponent { Final, Direct, Indirect, VoxelAlbedo, VoxelIrradiance, VoxelNormal };
+enum class OutputComponent {
+    Final, Direct, Indirect, VoxelAlbedo, VoxelIrradiance, VoxelNormal,
+    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts
+};
 
 // Names used on the command line, in the viewer and in reports ("voxel-albedo", ...).
 [[nodiscard]] const char* outputComponentName(OutputComponent output);
 [[nodiscard]] std::optional<OutputComponent> parseOutputComponent(std::string_view name);
 [[nodiscard]] const char* giModeName(GiMode mode);
 [[nodiscard]] const std::vector<OutputComponent>& allOutputComponents();
+// True for a technique's debug view (not a radiance component).
+[[nodiscard]] bool isDebugView(OutputComponent output);
 // False for a technique's debug view while another mode is active.
 [[nodiscard]] bool outputAvailable(OutputComponent output, GiMode mode);
 

@@ -69,6 +69,31 @@ SettingSpec boolSetting(std::string key, std::string help, Access access) {
             }};
 }
 
+// An int setting named by words on the command line ("area", "merz2010"); the number
+// itself is accepted too. `names[i]` is the word for value i.
+template <class Access>
+SettingSpec choiceSetting(std::string key, std::string help, std::vector<std::string> names,
+        Access access) {
+    std::string choices;
+    for (const std::string& name : names) choices += (choices.empty() ? "" : "|") + name;
+    return {std::move(key), std::move(help) + " [" + choices + "]",
+            [access, names](const Settings& s) {
+                const int value = access(const_cast<Settings&>(s));
+                return value >= 0 && value < int(names.size()) ? names[std::size_t(value)]
+                                                               : std::to_string(value);
+            },
+            [access, names, choices](Settings& s, const std::string& text, std::string& error) {
+                for (std::size_t i = 0; i < names.size(); ++i) {
+                    if (text == names[i] || text == std::to_string(i)) {
+                        access(s) = int(i);
+                        return true;
+                    }
+                }
+                error = "'" + text + "' is not one of " + choices;
+                return false;
+            }};
+}
+
 SettingSpec hidden(SettingSpec spec) {
     spec.hidden = true;
     return spec;
@@ -117,6 +142,12 @@ const std::vector<SettingSpec>& settingSpecs() {
                 0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.maxDistance; }),
         floatSetting("voxel.extent", "finest level edge in metres (0 = derived from the scene)", 0.0f,
                 1e6f, [](Settings& s) -> float& { return s.voxel.extent; }),
+        boolSetting("voxel.coverage_max_axis",
+                "propagate coverage as the most opaque axis' opacity (walls stay opaque)",
+                [](Settings& s) -> bool& { return s.voxel.coverageMaxAxis; }),
+        boolSetting("voxel.scene_centred",
+                "centre the cascade on the scene (finest level holds it) instead of the camera",
+                [](Settings& s) -> bool& { return s.voxel.sceneCentred; }),
         floatSetting("voxel.cone_angle", "full aperture of each of the 9 diffuse cones, degrees", 5.0f,
                 90.0f, [](Settings& s) -> float& { return s.voxel.coneAngle; }),
         floatSetting("voxel.step", "cone sample spacing in cone diameters", 0.1f, 2.0f,
@@ -127,6 +158,25 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.voxel.depthUpsample; }),
         intSetting("voxel.debug_level", "cascade level shown by the voxel debug views", 0, 7,
                 [](Settings& s) -> int& { return s.voxel.debugLevel; }),
+        intSetting("atlas.resolution", "texels per side of the GI atlas", 16, 4096,
+                [](Settings& s) -> int& { return s.atlas.resolution; }),
+        intSetting("atlas.samples", "Hammersley samples per atlas texel and set (thesis: 100)", 1,
+                4096, [](Settings& s) -> int& { return s.atlas.samples; }),
+        choiceSetting("atlas.estimator",
+                "gather weighting: area form (converges) or the thesis' 2 pi / N",
+                {"area", "merz2010"}, [](Settings& s) -> int& { return s.atlas.estimator; }),
+        choiceSetting("atlas.visibility", "occlusion between atlas texels", {"none", "voxel"},
+                [](Settings& s) -> int& { return s.atlas.visibility; }),
+        boolSetting("atlas.progressive", "accumulate sample sets over frames while nothing changes",
+                [](Settings& s) -> bool& { return s.atlas.progressive; }),
+        intSetting("atlas.target_samples", "progressive mode stops at this many samples", 1, 1 << 20,
+                [](Settings& s) -> int& { return s.atlas.targetSamples; }),
+        boolSetting("atlas.rotate", "Cranley-Patterson rotation of each new sample set",
+                [](Settings& s) -> bool& { return s.atlas.rotate; }),
+        intSetting("atlas.gutter", "empty texels between atlas charts", 2, 16,
+                [](Settings& s) -> int& { return s.atlas.gutter; }),
+        boolSetting("atlas.cache", "keep built atlases in the cache directory",
+                [](Settings& s) -> bool& { return s.atlas.cache; }),
         intSetting("reference.spp", "reference renderer: paths per pixel", 1, 65536,
                 [](Settings& s) -> int& { return s.reference.spp; }),
         intSetting("reference.bounces", "reference renderer: indirect bounces (1 = one bounce)",

@@ -28,12 +28,30 @@ struct VoxelSettings {
     float traceScale = 0.5f;      // voxel.trace_scale: cone-trace resolution / output resolution
     float maxDistance = 0.0f;     // voxel.max_distance: metres; 0 = edge of the coarsest level
     float extent = 0.0f;          // voxel.extent: finest level edge (m); 0 = from the scene
+    bool coverageMaxAxis = false; // voxel.coverage_max_axis: coarse coverage from the most
+                                  // opaque axis instead of the thesis' mean
+    bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds
+                                  // (finest level holding the scene) instead of the camera
     float coneAngle = 45.0f;      // voxel.cone_angle: full aperture of each diffuse cone, degrees
     float stepFactor = 1.0f;      // voxel.step: sample spacing in cone diameters (thesis: 1)
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
     int debugLevel = 0;           // voxel.debug_level: cascade level shown by debug views
     bool operator==(const VoxelSettings&) const = default;
+};
+
+// Texture-atlas GI (SEEDS.md section 2, gi/atlas); samples = 100 is the thesis' setting.
+struct AtlasSettings {
+    int resolution = 1024;        // atlas.resolution: texels per side of the atlas
+    int samples = 100;            // atlas.samples: N, Hammersley points per gather set
+    int estimator = 0;            // atlas.estimator: ATLAS_ESTIMATOR_* (0 area, 1 merz2010)
+    int visibility = 0;           // atlas.visibility: ATLAS_VISIBILITY_* (0 none, 1 voxel)
+    bool progressive = true;      // atlas.progressive: accumulate sets while nothing changes
+    int targetSamples = 1024;     // atlas.target_samples: stop accumulating at this count
+    bool rotate = true;           // atlas.rotate: new Cranley-Patterson offset per set
+    int gutter = 2;               // atlas.gutter: empty texels between charts
+    bool cache = true;            // atlas.cache: keep built atlases on disk
+    bool operator==(const AtlasSettings&) const = default;
 };
 
 // The Embree ground-truth renderer (src/reference/); see ReferenceRenderer.h.
@@ -57,6 +75,7 @@ struct Settings {
     float shininess = 64.0f;    // material.shininess: Blinn-Phong exponent n
     ShadowSettings shadow;
     VoxelSettings voxel;
+    AtlasSettings atlas;
     ReferenceSettings reference;
     // Viewer.
     bool screenshotUi = false;  // view.screenshot_ui (hidden): --screenshot includes the overlay

@@ -139,8 +139,8 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
             table.empty() ? nullptr : table.data(), 0, "scene/lights");
 }
 
-void GpuScene::drawAll(GLuint program, bool cullBackFaces) const {
-    glBindVertexArray(mVertexArray.id());
+void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray) const {
+    glBindVertexArray(vertexArray ? vertexArray->id() : mVertexArray.id());
     glBindSampler(BIND_TEX_BASE_COLOR, 0);
     glBindSampler(BIND_TEX_EMISSIVE, 0);
     for (const Draw& draw : mDraws) {

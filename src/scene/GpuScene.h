@@ -38,7 +38,9 @@ public:
 
     // Issues every draw with the current program; binds base-colour and emissive textures
     // and sets LOC_DRAW_MATERIAL per draw. `cullBackFaces` culls single-sided draws only.
-    void drawAll(GLuint program, bool cullBackFaces) const;
+    // `vertexArray` replaces the scene's own vertex array; it must hold the same triangles in
+    // the same order (e.g. the texture atlas' geometry, whose vertices are split at charts).
+    void drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray = nullptr) const;
 
     const gl::Buffer& lightBuffer() const { return mLights; }
     const gl::Buffer& materialBuffer() const { return mMaterials; }

@@ -53,7 +53,8 @@ TEST(OwenSobol, FirstTwoDimensionsFormA02Net) {
             const std::uint32_t nx = 1u << bx, ny = 1u << (kM - bx);
             std::set<std::uint64_t> cells;
             for (std::uint32_t i = 0; i < kN; ++i) {
-                cells.insert(std::uint64_t(xs[i] * float(nx)) * ny + std::uint64_t(ys[i] * float(ny)));
+                cells.insert(std::uint64_t(xs[i] * float(nx)) * ny +
+                             std::uint64_t(ys[i] * float(ny)));
             }
             EXPECT_EQ(cells.size(), kN) << "seed " << seed << " intervals " << nx << "x" << ny;
         }

@@ -1,17 +1,21 @@
 // Reference cache: a second request is a hit with bit-identical data; every input the image
 // depends on changes the key; damaged entries (flipped bytes, truncation, missing or bad JSON)
-// are re-rendered, never trusted. Also the progress reporting of long renders.
+// are re-rendered, never trusted. Also the progress reporting of long renders and requests
+// without a meaningful image.
 #include "ReferenceTestScenes.h"
 #include "reference/ProgressBar.h"
 #include "reference/ReferenceCache.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 namespace gi::reference {
@@ -193,6 +197,51 @@ TEST(ReferenceCache, DefaultDirectoryFollowsEnvironment) {
                 fs::path(home) / ".cache" / "voxatlas" / "reference");
     }
     if (saved) ::setenv("VOXATLAS_CACHE_DIR", savedValue.c_str(), 1);
+}
+
+TEST(ReferenceRenderer, ReportsProgressUpToOne) {
+    const Fixture f;
+    std::vector<double> fractions;
+    const ReferenceResult result = renderReference(f.scene, f.camera, 40, 30, f.settings,
+            [&](double fraction) { fractions.push_back(fraction); });
+    ASSERT_FALSE(fractions.empty());
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_GT(fractions.size(), 2u) << "one call per finished 16 x 16 tile";
+    EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
+    EXPECT_EQ(std::count(fractions.begin(), fractions.end(), 1.0), 1);
+    EXPECT_EQ(result.width(), 40);
+}
+
+TEST(ReferenceRenderer, DegenerateRequests) {
+    const Fixture f;
+    EXPECT_TRUE(renderReference(f.scene, f.camera, 0, 10, f.settings).final.empty());
+    EXPECT_TRUE(renderReference(f.scene, f.camera, 10, -1, f.settings).final.empty());
+    ReferenceSettings one = f.settings;
+    one.spp = 1;
+    const ReferenceResult single = renderReference(f.scene, f.camera, 8, 6, one);
+    EXPECT_TRUE(std::isnan(single.noise.final)) << "no second half to compare with";
+    EXPECT_TRUE(render::allFinite(single.final));
+    const scene::Scene empty;
+    const ReferenceResult nothing = renderReference(empty, f.camera, 8, 6, f.settings);
+    ASSERT_EQ(nothing.width(), 8);
+    EXPECT_EQ(nothing.final.rgb, std::vector<float>(8 * 6 * 3, 0.0f));
+    EXPECT_EQ(nothing.coverage, std::vector<float>(8 * 6, 0.0f));
+    EXPECT_TRUE(std::isnan(nothing.noise.final)) << "no geometry pixels";
+    EXPECT_EQ(nothing.rays.primary, 8u * 6u * 4u);
+
+    // Lights without a direction or with non-finite numbers light nothing and never make NaNs.
+    Fixture hostile;
+    scene::Light spot;
+    spot.type = scene::LightType::Spot;
+    spot.direction = glm::vec3(0.0f);
+    scene::Light sun;
+    sun.type = scene::LightType::Directional;
+    sun.direction = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+    scene::Light bad;
+    bad.position = glm::vec3(std::numeric_limits<float>::infinity());
+    hostile.scene.lights = {spot, sun, bad};
+    const ReferenceResult dark = renderReference(hostile.scene, hostile.camera, 8, 6, f.settings);
+    EXPECT_EQ(dark.final.rgb, std::vector<float>(8 * 6 * 3, 0.0f));
 }
 
 std::string progressOutput(ProgressBar::Style style, const std::vector<double>& fractions) {

@@ -11,19 +11,25 @@ AtlasMesh flattenScene(const scene::Scene& scene) {
     bool allHaveTexcoord1 = true, anyTriangles = false;
     for (const scene::Instance& instance : scene.instances) {
         const scene::Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.worldFromLocal)));
+        const glm::mat3 normalMatrix =
+                glm::transpose(glm::inverse(glm::mat3(instance.worldFromLocal)));
         const bool doubleSided = primitive.material >= 0 &&
-                                 scene.materials[std::size_t(primitive.material)].doubleSided;
+                scene.materials[std::size_t(primitive.material)].doubleSided;
         const auto base = std::uint32_t(mesh.positions.size());
         for (std::size_t i = 0; i < primitive.positions.size(); ++i) {
-            mesh.positions.push_back(glm::vec3(instance.worldFromLocal * glm::vec4(primitive.positions[i], 1.0f)));
+            mesh.positions.push_back(
+                    glm::vec3(instance.worldFromLocal * glm::vec4(primitive.positions[i], 1.0f)));
             glm::vec3 n = normalMatrix * primitive.normals[i];
             const float length = glm::length(n);
-            mesh.normals.push_back(length > 0.0f && std::isfinite(length) ? n / length
-                                                                          : glm::vec3(0.0f, 1.0f, 0.0f));
-            mesh.texcoords0.push_back(i < primitive.texcoords0.size() ? primitive.texcoords0[i] : glm::vec2(0.0f));
-            mesh.texcoords1.push_back(i < primitive.texcoords1.size() ? primitive.texcoords1[i] : glm::vec2(0.0f));
-            mesh.colors.push_back(i < primitive.colors.size() ? primitive.colors[i] : glm::vec4(1.0f));
+            mesh.normals.push_back(length > 0.0f && std::isfinite(length)
+                            ? n / length
+                            : glm::vec3(0.0f, 1.0f, 0.0f));
+            mesh.texcoords0.push_back(
+                    i < primitive.texcoords0.size() ? primitive.texcoords0[i] : glm::vec2(0.0f));
+            mesh.texcoords1.push_back(
+                    i < primitive.texcoords1.size() ? primitive.texcoords1[i] : glm::vec2(0.0f));
+            mesh.colors.push_back(
+                    i < primitive.colors.size() ? primitive.colors[i] : glm::vec4(1.0f));
             mesh.doubleSided.push_back(doubleSided ? 1 : 0);
         }
         if (primitive.indices.size() >= 3) {

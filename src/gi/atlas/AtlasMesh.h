@@ -15,8 +15,8 @@
 namespace gi::atlas {
 
 struct AtlasMesh {
-    std::vector<glm::vec3> positions;      // world space, metres
-    std::vector<glm::vec3> normals;        // world space, unit
+    std::vector<glm::vec3> positions; // world space, metres
+    std::vector<glm::vec3> normals;   // world space, unit
     std::vector<glm::vec2> texcoords0;
     std::vector<glm::vec2> texcoords1;     // zero where a primitive has no TEXCOORD_1
     std::vector<glm::vec4> colors;         // linear RGBA, white when absent

@@ -66,4 +66,9 @@ float CascadeVolume::finestExtentFor(const scene::Aabb& bounds, const glm::vec3&
     return coarsest / float(1 << (std::clamp(levels, 1, kMaxLevels) - 1));
 }
 
+float CascadeVolume::finestExtentCovering(const scene::Aabb& bounds) {
+    const glm::vec3 size = bounds.size();
+    return std::max(std::max(size.x, std::max(size.y, size.z)) * 1.1f, 1e-6f);
+}
+
 } // namespace gi::voxel

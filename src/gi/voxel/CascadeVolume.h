@@ -50,6 +50,10 @@ public:
     [[nodiscard]] static float finestExtentFor(const scene::Aabb& bounds, const glm::vec3& eye,
             int levels);
 
+    // Edge of a finest level that holds all of `bounds` when centred on it (voxel.center=scene),
+    // with room for the snap to the coarsest voxel size.
+    [[nodiscard]] static float finestExtentCovering(const scene::Aabb& bounds);
+
 private:
     int mResolution = 32, mLevels = 3;
     float mFinestExtent = 1.0f;

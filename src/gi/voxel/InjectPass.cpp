@@ -114,6 +114,7 @@ void InjectPass::finalize(const Inputs& in, const VoxelTextures& t, gl::GpuProfi
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
     glBindImageTexture(BIND_IMG_VOXEL_HELPER, t.helper.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
     glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, t.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
+    glBindImageTexture(BIND_IMG_VOXEL_ALBEDO, t.albedo.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
     glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
     // Consumers: the next light's injection (helper) and propagation (irradiance).
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

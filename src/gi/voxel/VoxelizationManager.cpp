@@ -45,7 +45,8 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
     }
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
                             s.levels != mSettings.levels;
-    const bool replace = reallocate || s.extent != mSettings.extent;
+    const bool replace = reallocate || s.extent != mSettings.extent ||
+                         s.sceneCentred != mSettings.sceneCentred;
     mSettings = s;
     mConfigured = true;
     if (reallocate) mTextures.allocate(s.resolution, s.levels);
@@ -75,19 +76,22 @@ void VoxelizationManager::writeUniforms() {
     const int coarsest = mVolume.levels() - 1;
     const float rasterPixel = mVolume.extent(coarsest) / float(mSettings.resolution * mSettings.multiplier);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
-            rasterPixel * rasterPixel, 0.0f, 0.0f);
+            rasterPixel * rasterPixel, mSettings.coverageMaxAxis ? 1.0f : 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
 void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     if (mFinestExtent <= 0.0f) {
-        mFinestExtent = CascadeVolume::finestExtentFor(mSceneBounds, in.camera.eye, mSettings.levels);
+        mFinestExtent = mSettings.sceneCentred
+                ? CascadeVolume::finestExtentCovering(mSceneBounds)
+                : CascadeVolume::finestExtentFor(mSceneBounds, in.camera.eye, mSettings.levels);
     }
     if (mVolume.resolution() != mSettings.resolution || mVolume.levels() != mSettings.levels ||
             mVolume.extent(0) != mFinestExtent) {
         mVolume = CascadeVolume(mSettings.resolution, mSettings.levels, mFinestExtent);
     }
-    mVolume.placeAround(in.camera.eye);
+    mVolume.placeAround(mSettings.sceneCentred && !mSceneBounds.empty() ? mSceneBounds.center()
+                                                                        : in.camera.eye);
     writeUniforms();
     {
         gl::GpuScope scope(profiler, "voxel/clear");

@@ -1,0 +1,60 @@
+// Atlas debug views: one atlas layer mapped onto the scene from the camera. G-buffer layers
+// are read at the texel under the pixel's atlas coordinate (no filtering, so the view shows
+// what the gather reads); the indirect layer bilinearly, as the resolve reads it.
+//   direct    outgoing direct radiance L = rho/pi E + L_emitted (compare --output direct
+//             with material.specular=0)
+//   normal    0.5 + 0.5 n
+//   position  world position in metres
+//   albedo    rho
+//   indirect  E_ind / pi: the radiance of a white diffuser (as the voxel irradiance view)
+//   charts    a random colour per chart
+#include "../common/frame.glsl"
+#include "../common/material.glsl"
+#include "atlas_common.glsl"
+
+layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
+layout(binding = BIND_TEX_ATLAS_DIRECT) uniform sampler2D atlasDirect;
+layout(binding = BIND_TEX_ATLAS_NORMAL) uniform sampler2D atlasNormal;
+layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
+layout(binding = BIND_TEX_ATLAS_ALBEDO) uniform sampler2D atlasAlbedo;
+layout(binding = BIND_TEX_ATLAS_LIT) uniform sampler2D atlasLit;
+
+in ResolveVertex {
+    vec3 position;
+    vec2 texcoord0;
+    vec2 texcoord1;
+    vec4 color;
+    vec2 atlasUv;
+    flat float chart;
+} vin;
+
+layout(location = 0) out vec4 outColor;
+
+const float PI = 3.14159265358979;
+
+vec3 chartColor(uint id) {
+    // PCG-style integer hash to a saturated colour.
+    uint h = id * 747796405u + 2891336453u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    vec3 c = vec3(h & 0xffu, (h >> 8u) & 0xffu, (h >> 16u) & 0xffu) / 255.0;
+    return 0.15 + 0.85 * c;
+}
+
+void main() {
+    GpuMaterial m = materials[drawMaterial];
+    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+    if (materialCutOut(m, baseColor.a)) discard;
+    int resolution = atlas.size.x;
+    ivec2 texel = clamp(ivec2(floor(vin.atlasUv * float(resolution))), ivec2(0), ivec2(resolution - 1));
+    vec3 color;
+    switch (atlas.size.w) {
+    case ATLAS_VIEW_DIRECT: color = texelFetch(atlasDirect, texel, 0).rgb; break;
+    case ATLAS_VIEW_NORMAL: color = 0.5 + 0.5 * texelFetch(atlasNormal, texel, 0).xyz; break;
+    case ATLAS_VIEW_POSITION: color = texelFetch(atlasPosition, texel, 0).xyz; break;
+    case ATLAS_VIEW_ALBEDO: color = texelFetch(atlasAlbedo, texel, 0).rgb; break;
+    case ATLAS_VIEW_INDIRECT: color = texture(atlasLit, vin.atlasUv).rgb / PI; break;
+    default: color = chartColor(uint(vin.chart + 0.5)); break;
+    }
+    outColor = vec4(color, 1.0);
+}

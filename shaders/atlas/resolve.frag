@@ -1,0 +1,28 @@
+// Atlas resolve (thesis 4.7): every pixel looks up the lit atlas bilinearly at its surface's
+// atlas coordinate, giving the screen-space E_ind (W/m^2) the GiOutputs contract asks for,
+// and stores its view depth for the final pass's depth-aware lookup.
+#include "../common/frame.glsl"
+#include "../common/material.glsl"
+#include "atlas_common.glsl"
+
+layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
+layout(binding = BIND_TEX_ATLAS_LIT) uniform sampler2D atlasLit;
+
+in ResolveVertex {
+    vec3 position;
+    vec2 texcoord0;
+    vec2 texcoord1;
+    vec4 color;
+    vec2 atlasUv;
+    flat float chart;
+} vin;
+
+layout(location = 0) out vec4 outIndirect;
+
+void main() {
+    GpuMaterial m = materials[drawMaterial];
+    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+    if (materialCutOut(m, baseColor.a)) discard;
+    float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
+    outIndirect = vec4(texture(atlasLit, vin.atlasUv).rgb, viewDepth);
+}

@@ -1,0 +1,221 @@
+#include "app/BenchCommand.h"
+
+#include "app/SceneSetup.h"
+#include "bench/BenchReport.h"
+#include "bench/BenchRunner.h"
+#include "bench/BenchSweep.h"
+#include "gl/GpuProfiler.h"
+#include "platform/GlContext.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <memory>
+#include <thread>
+
+namespace gi::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The camera DESIGN.md's Sponza measurements use: inside the atrium, looking down its length.
+const CameraSpec kSponzaCamera{{0.0f, 2.0f, 14.0f}, {0.0f, 4.0f, -10.0f}, 60.0f};
+constexpr const char* kSponzaCameraText = "camera 0,2,14,0,4,-10,60";
+constexpr const char* kPython = "/usr/bin/python3";
+
+int fail(int status, const std::string& message) {
+    std::fprintf(stderr, "voxatlas bench: %s\n", message.c_str());
+    return status;
+}
+
+struct SceneChoice {
+    std::string path;
+    bool explicitPath = false;   // from --scene: a missing file is bad input, not a skip
+};
+
+// The second scene: --scene, else $VOXATLAS_SPONZA, else the shared Sponza next to the
+// source tree.
+SceneChoice secondScene(const Config& config) {
+    if (config.scenePath != defaultScenePath()) return {config.scenePath, true};
+    const char* env = std::getenv("VOXATLAS_SPONZA");
+    if (env && *env) return {env, false};
+    return {(fs::path(dataDirectory()) / "../shared/assets/sponza/Sponza.gltf").lexically_normal().string(),
+            false};
+}
+
+bool isSponza(const std::string& path) {
+    std::string stem = fs::path(path).stem().string();
+    for (char& c : stem) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return stem == "sponza";
+}
+
+std::string localTime() {
+    const std::time_t now = std::time(nullptr);
+    char text[64];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M", std::localtime(&now));
+    return text;
+}
+
+struct LoadedScene {
+    scene::Scene scene;
+    bench::BenchScene bench;
+};
+
+} // namespace
+
+int runBench(const Config& config) {
+    const auto start = std::chrono::steady_clock::now();
+    const char* smokeEnv = std::getenv("VOXATLAS_BENCH_SMOKE");
+    const bool smoke = smokeEnv && std::string(smokeEnv) == "1";
+    const bench::SweepSize size = smoke         ? bench::SweepSize::Smoke
+                                  : config.quick ? bench::SweepSize::Quick
+                                                 : bench::SweepSize::Full;
+    const bench::RunOptions runOptions{2, config.quick ? 3 : 7};
+    const std::string outDir = config.outDir.empty() ? "docs/results" : config.outDir;
+
+    std::error_code ec;
+    fs::create_directories(outDir, ec);
+    if (ec || !fs::is_directory(outDir)) {
+        return fail(2, "--out-dir " + outDir + ": cannot create the directory" +
+                (ec ? " (" + ec.message() + ")" : ""));
+    }
+
+    Settings base = config.settings;
+    base.specular = 0.0f;
+    if (base.reference.spp == Settings{}.reference.spp) base.reference.spp = config.quick ? 64 : 256;
+
+    std::vector<std::string> notes;
+    std::vector<std::unique_ptr<LoadedScene>> scenes;
+    auto addScene = [&](const std::string& path, const std::string& name,
+                            const std::optional<CameraSpec>& spec, const std::string& cameraText,
+                            glm::ivec2 quickSize, std::string& error) {
+        auto loaded = std::make_unique<LoadedScene>();
+        Config sceneConfig = config;
+        sceneConfig.scenePath = path;
+        sceneConfig.cameraSpec = spec;
+        sceneConfig.cameraIndex = 0;
+        if (!loadScene(sceneConfig, loaded->scene, error)) return false;
+        bench::BenchScene& b = loaded->bench;
+        b.name = name;
+        b.path = path;
+        b.cameraText = cameraText;
+        b.scene = &loaded->scene;
+        b.size = config.quick ? quickSize : quickSize * 2;
+        if (!selectCamera(sceneConfig, loaded->scene, float(b.size.x) / float(b.size.y), b.camera, error)) {
+            return false;
+        }
+        const glm::vec3 diagonal = loaded->scene.bounds.max - loaded->scene.bounds.min;
+        b.configurations = bench::benchConfigurations({size,
+                bench::shortMaxDistance(glm::length(diagonal)),
+                runOptions.warmupFrames + runOptions.timedFrames});
+        scenes.push_back(std::move(loaded));
+        return true;
+    };
+
+    std::string error;
+    if (!addScene(defaultScenePath(), "cornell_box", std::nullopt, "camera 0", {128, 128}, error)) {
+        return fail(2, error);
+    }
+    if (smoke) {
+        notes.push_back("VOXATLAS_BENCH_SMOKE=1: the Cornell box and a handful of configurations only.");
+    } else {
+        const SceneChoice second = secondScene(config);
+        const bool sameAsCornell = fs::exists(second.path) &&
+                                   fs::equivalent(second.path, defaultScenePath(), ec);
+        if (!sameAsCornell) {
+            if (!second.explicitPath && !fs::exists(second.path)) {
+                const std::string note = "Sponza not found at " + second.path +
+                                         "; set VOXATLAS_SPONZA or pass --scene to include it";
+                std::fprintf(stderr, "voxatlas bench: %s\n", note.c_str());
+                notes.push_back(note);
+            } else {
+                const bool sponza = isSponza(second.path);
+                if (!addScene(second.path, fs::path(second.path).stem().string(),
+                            sponza ? std::optional<CameraSpec>(kSponzaCamera) : std::nullopt,
+                            sponza ? kSponzaCameraText : "camera 0", {160, 90}, error)) {
+                    return fail(2, error);
+                }
+            }
+        }
+    }
+
+    std::string notice;
+    auto context = platform::createHeadlessContext(config.gl, !config.glExplicit, error, notice);
+    if (!context) return fail(1, "no OpenGL 4.5 context: " + error);
+    if (!notice.empty()) std::fprintf(stderr, "voxatlas bench: %s\n", notice.c_str());
+    if (base.glDebug) platform::installDebugMessageLog();
+
+    const bench::BenchRunner runner(base, runOptions);
+    bench::BenchRunInfo info;
+    info.sweep = smoke ? "smoke" : config.quick ? "quick" : "full";
+    info.date = localTime();
+    info.glRenderer = context->description();
+    info.timing = gl::currentContextTimingMode() == gl::TimingMode::Finish
+            ? "glFinish before and after each pass, wall clock (llvmpipe's timer queries miss "
+              "its rasterizer threads)"
+            : "GL timestamp queries";
+    info.cores = int(std::thread::hardware_concurrency());
+    info.warmupFrames = runOptions.warmupFrames;
+    info.timedFrames = runOptions.timedFrames;
+    info.notes = notes;
+
+    std::vector<reference::ReferenceResult> references;
+    int total = 0;
+    double totalCost = 0.0;
+    for (const auto& loaded : scenes) {
+        references.push_back(runner.reference(loaded->bench, error));
+        if (references.back().final.empty()) return fail(1, "reference for " + loaded->bench.path + ": " + error);
+        const reference::ReferenceResult& r = references.back();
+        info.scenes.push_back({loaded->bench.name, loaded->bench.path, loaded->bench.cameraText,
+                loaded->bench.size, r.spp, r.bounces, r.noise.indirect, r.noise.final});
+        for (const bench::BenchConfiguration& c : loaded->bench.configurations) {
+            ++total;
+            totalCost += c.costEstimate * double(loaded->bench.size.x * loaded->bench.size.y) /
+                         (128.0 * 128.0);
+        }
+    }
+
+    std::printf("voxatlas bench (%s): %d configurations on %zu scene(s), %s\n", info.sweep.c_str(),
+            total, scenes.size(), info.glRenderer.c_str());
+    std::fflush(stdout);
+    bench::BenchProgress progress(total, totalCost, stdout);
+    std::vector<bench::BenchMeasurement> measurements;
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        // The ETA's cost units scale with the image size, as the per-pixel passes do.
+        bench::BenchScene scaled = scenes[i]->bench;
+        const double pixels = double(scaled.size.x * scaled.size.y) / (128.0 * 128.0);
+        for (bench::BenchConfiguration& c : scaled.configurations) c.costEstimate *= pixels;
+        if (!runner.run(scaled, references[i], progress, measurements, error)) {
+            return fail(1, scenes[i]->bench.path + ": " + error);
+        }
+    }
+
+    bench::finalizeMeasurements(measurements);
+    info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!bench::writeBenchReport(outDir, measurements, info, error)) return fail(1, error);
+
+    const std::string csvPath = (fs::path(outDir) / "bench.csv").string();
+    const std::string pngPath = (fs::path(outDir) / "pareto.png").string();
+    std::string plotMessage;
+    const bool plotted = bench::runPlotScript(kPython,
+            (fs::path(dataDirectory()) / "scripts/plot_pareto.py").string(), csvPath, pngPath,
+            plotMessage);
+    if (!plotted) {
+        // An older plot would no longer match the table.
+        fs::remove(pngPath, ec);
+        std::fprintf(stderr, "voxatlas bench: plot skipped: %s\n", plotMessage.c_str());
+    }
+
+    int measured = 0;
+    for (const bench::BenchMeasurement& m : measurements) measured += m.available ? 1 : 0;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("voxatlas bench: %d of %d configurations measured in %d min %02d s; wrote %s/bench.csv, "
+                "bench.md%s\n",
+            measured, total, int(seconds) / 60, int(seconds) % 60, outDir.c_str(),
+            plotted ? ", pareto.png" : " (no plot)");
+    return measured > 0 ? 0 : 1;
+}
+
+} // namespace gi::app

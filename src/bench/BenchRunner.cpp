@@ -1,0 +1,234 @@
+#include "bench/BenchRunner.h"
+
+#include "gl/ShaderLibrary.h"
+#include "reference/ImageMetrics.h"
+#include "reference/ProgressBar.h"
+#include "reference/ReferenceCache.h"
+#include "render/FrameRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gi::bench {
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+bool startsWith(const std::string& text, const std::string& prefix) {
+    return text.rfind(prefix, 0) == 0;
+}
+
+// Passes and allocations of the GI techniques (the atlas' voxel visibility counts as atlas
+// cost); the debug views are not part of a frame.
+bool isGiName(const std::string& name) {
+    return (startsWith(name, "voxel/") || startsWith(name, "atlas/")) &&
+           name.find("debug_view") == std::string::npos;
+}
+
+std::string formatDuration(double seconds) {
+    const long s = std::lround(std::max(0.0, seconds));
+    char text[32];
+    if (s >= 3600) std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s / 60) % 60);
+    else std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
+    return text;
+}
+
+// Effective values of the swept keys that belong to the configuration's technique.
+std::map<std::string, std::string> effectiveSettings(const Settings& settings,
+        const std::vector<std::string>& keys, render::GiMode mode) {
+    const std::string prefix = std::string(render::giModeName(mode)) + ".";
+    std::map<std::string, std::string> values;
+    for (const SettingSpec& spec : settingSpecs()) {
+        if (startsWith(spec.key, prefix) &&
+                std::find(keys.begin(), keys.end(), spec.key) != keys.end()) {
+            values[spec.key] = spec.get(settings);
+        }
+    }
+    return values;
+}
+
+} // namespace
+
+BenchProgress::BenchProgress(int total, double totalCost, std::FILE* out)
+    : mTotal(total), mTotalCost(totalCost), mOut(out), mStart(std::chrono::steady_clock::now()) {}
+
+double BenchProgress::elapsedSeconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+}
+
+void BenchProgress::report(const BenchMeasurement& m, double cost) {
+    ++mDone;
+    mDoneCost += cost;
+    const double elapsed = elapsedSeconds();
+    const double eta = mDoneCost > 0.0 ? elapsed * (mTotalCost - mDoneCost) / mDoneCost : 0.0;
+    const int width = int(std::to_string(mTotal).size());
+    std::fprintf(mOut, "[%*d/%d] ETA %s  %s %s | %s: ", width, mDone, mTotal,
+            formatDuration(eta).c_str(), m.scene.c_str(), seriesName(m.configuration).c_str(),
+            m.configuration.label.c_str());
+    if (!m.available) {
+        std::fprintf(mOut, "not measured (%s)\n", m.unavailableReason.c_str());
+    } else {
+        char ratio[32] = "";
+        if (m.frameRatio > 0.0) std::snprintf(ratio, sizeof ratio, " (x%.2f base)", m.frameRatio);
+        std::fprintf(mOut,
+                "frame %.1f ms%s, GI %.1f ms, GI memory %.1f MiB; rel. RMSE indirect %.1f %%, "
+                "final %.1f %%, indirect energy x%.3f\n",
+                m.frameMs, ratio, m.giMs, double(m.giMemoryBytes) / (1024.0 * 1024.0),
+                100.0 * m.relRmseIndirect, 100.0 * m.relRmseFinal, m.energyRatioIndirect);
+    }
+    std::fflush(mOut);
+}
+
+BenchRunner::BenchRunner(const Settings& base, RunOptions options)
+    : mBase(base), mOptions(options) {}
+
+reference::ReferenceResult BenchRunner::reference(const BenchScene& scene,
+        std::string& error) const {
+    const reference::ReferenceCache cache(reference::ReferenceCache::defaultDirectory());
+    reference::CachedRenderStatus status;
+    reference::ProgressBar bar("reference " + scene.name + " " + std::to_string(scene.size.x) + "x" +
+            std::to_string(scene.size.y) + ", " + std::to_string(mBase.reference.spp) + " spp");
+    reference::ReferenceResult result = reference::renderReferenceCached(*scene.scene,
+            scene.camera, scene.size.x, scene.size.y, mBase.reference, cache, status, error,
+            bar.callback());
+    bar.finish();
+    if (!status.storeError.empty()) {
+        std::fprintf(stderr, "voxatlas bench: reference not cached: %s\n", status.storeError.c_str());
+    }
+    if (!result.final.empty()) {
+        std::fprintf(stderr,
+                "voxatlas bench: reference %s %s (noise %.2f %% indirect, %.2f %% final)\n",
+                scene.name.c_str(),
+                status.hit ? "loaded from the cache"
+                           : ("rendered in " + std::to_string(result.seconds) + " s").c_str(),
+                100.0 * result.noise.indirect, 100.0 * result.noise.final);
+    }
+    return result;
+}
+
+bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult& reference,
+        BenchProgress& progress, std::vector<BenchMeasurement>& results, std::string& error) const {
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    if (!renderer.init(*scene.scene, mBase, shaders, error)) return false;
+
+    const std::vector<std::string> keys = changedKeys(scene.configurations);
+    std::map<render::GiMode, double> baseFrameMs;
+    std::map<render::GiMode, std::string> failedModes;
+
+    for (const BenchConfiguration& configuration : scene.configurations) {
+        BenchMeasurement m;
+        m.scene = scene.name;
+        m.configuration = configuration;
+        m.size = scene.size;
+        m.referenceNoiseIndirect = reference.noise.indirect;
+        m.referenceNoiseFinal = reference.noise.final;
+        m.referenceSpp = reference.spp;
+
+        auto unavailable = [&](const std::string& why) {
+            m.available = false;
+            m.unavailableReason = why;
+            progress.report(m, configuration.costEstimate);
+            results.push_back(m);
+        };
+        if (const auto failed = failedModes.find(configuration.mode); failed != failedModes.end()) {
+            unavailable(failed->second);
+            continue;
+        }
+        Settings settings = mBase;
+        std::string why;
+        if (!applyConfiguration(configuration, settings, why)) {
+            unavailable(why);
+            continue;
+        }
+        m.settings = effectiveSettings(settings, keys, configuration.mode);
+
+        // Every configuration starts from a new technique: no running average, accumulated
+        // sample set or cached G-buffer carries over from the previous one.
+        if (!renderer.setMode(render::GiMode::Direct, why) || !renderer.setSettings(settings, why)) {
+            unavailable(why);
+            continue;
+        }
+        if (!renderer.setMode(configuration.mode, why)) {
+            const std::string reason = std::string(render::giModeName(configuration.mode)) +
+                                       " mode unavailable: " + why;
+            failedModes[configuration.mode] = reason;
+            unavailable(reason);
+            continue;
+        }
+
+        gl::GpuProfiler profiler;
+        auto frame = [&](render::OutputComponent output) {
+            renderer.render(scene.camera, scene.size, output, profiler);
+        };
+        for (int i = 0; i < mOptions.warmupFrames; ++i) frame(render::OutputComponent::Final);
+        profiler.clearSamples();
+        std::vector<double> frameMs;
+        for (int i = 0; i < mOptions.timedFrames; ++i) {
+            glFinish();
+            const auto start = std::chrono::steady_clock::now();
+            frame(render::OutputComponent::Final);
+            glFinish();
+            frameMs.push_back(std::chrono::duration<double, std::milli>(
+                    std::chrono::steady_clock::now() - start).count());
+            profiler.collect();
+        }
+        profiler.flush();
+        m.passes = profiler.timings();
+        // A progressive configuration is scored after all of its frames.
+        for (int i = mOptions.warmupFrames + mOptions.timedFrames; i < configuration.accumulatedFrames;
+                ++i) {
+            frame(render::OutputComponent::Final);
+        }
+        const render::Image finalImage = renderer.readback();
+        frame(render::OutputComponent::Indirect);
+        const render::Image indirectImage = renderer.readback();
+        if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
+            char text[64];
+            std::snprintf(text, sizeof text, "OpenGL error 0x%04x while rendering", glError);
+            unavailable(text);
+            continue;
+        }
+
+        const bool wantsVoxelVisibility = m.settings.count("atlas.visibility") &&
+                                          m.settings.at("atlas.visibility") == "voxel";
+        const bool ranVoxelPass = std::any_of(m.passes.begin(), m.passes.end(),
+                [](const gl::PassTiming& pass) { return startsWith(pass.name, "voxel/"); });
+        if (configuration.mode == render::GiMode::Atlas && wantsVoxelVisibility && !ranVoxelPass) {
+            unavailable("atlas.visibility=voxel: no voxel pass ran, the renderer gave the atlas "
+                        "no occupancy volume (the image would equal visibility=none)");
+            continue;
+        }
+
+        m.frameMs = median(frameMs);
+        for (const gl::PassTiming& pass : m.passes) {
+            if (isGiName(pass.name)) m.giMs += pass.gpuMsMedian;
+        }
+        for (const gl::MemoryItem& item : renderer.memory()) {
+            m.memoryBytes += item.bytes;
+            if (isGiName(item.name)) m.giMemoryBytes += item.bytes;
+        }
+        const reference::ImageErrors indirect =
+                reference::measureImageError(indirectImage, reference.indirect, reference.coverage);
+        const reference::ImageErrors final =
+                reference::measureImageError(finalImage, reference.final, reference.coverage);
+        m.relRmseIndirect = indirect.relativeRmse;
+        m.energyRatioIndirect = indirect.energyRatio;
+        m.relRmseFinal = final.relativeRmse;
+        if (configuration.base) baseFrameMs[configuration.mode] = m.frameMs;
+        if (const auto base = baseFrameMs.find(configuration.mode); base != baseFrameMs.end()) {
+            m.frameRatio = m.frameMs / base->second;
+        }
+        progress.report(m, configuration.costEstimate);
+        results.push_back(m);
+    }
+    renderer.setMode(render::GiMode::Direct, error);
+    return true;
+}
+
+} // namespace gi::bench

@@ -1,0 +1,104 @@
+// Runs the bench's configurations on one scene and measures each (DESIGN.md "Measuring"):
+//   time   warm-up frames, then the median of the timed frames: per pass (GpuProfiler medians;
+//          glFinish wall clock on llvmpipe) and for the whole frame (wall clock from a glFinish
+//          before render() to a glFinish after it);
+//   memory FrameRenderer::memory(): bytes of every texture and buffer allocated, in total and
+//          for the GI technique alone;
+//   error  the final image of the last frame and one more frame of the indirect component,
+//          read back as linear radiance and scored against the ground-truth renderer (cached
+//          on disk) over its geometry pixels with measureImageError: relative RMSE of the
+//          indirect component and of the final image, and the indirect mean-energy ratio.
+// A mode the build cannot run (setMode fails) or a configuration it cannot honour is recorded
+// as unavailable with the reason, and the sweep goes on.
+#pragma once
+
+#include "bench/BenchSweep.h"
+#include "gl/GpuProfiler.h"
+#include "gl/Objects.h"
+#include "reference/ReferenceRenderer.h"
+#include "render/CameraView.h"
+#include "render/Settings.h"
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gi::bench {
+
+struct BenchScene {
+    std::string name;                  // short name for tables: "cornell_box", "Sponza"
+    std::string path;                  // the glTF file
+    std::string cameraText;            // how the camera was chosen ("camera 0", "0,2,14,...")
+    const scene::Scene* scene = nullptr;
+    render::CameraView camera;
+    glm::ivec2 size{0};                // output pixels
+    std::vector<BenchConfiguration> configurations;
+};
+
+struct BenchMeasurement {
+    std::string scene;
+    BenchConfiguration configuration;
+    glm::ivec2 size{0};
+    bool available = true;
+    std::string unavailableReason;     // why it was not measured
+    std::map<std::string, std::string> settings;   // effective value of every swept key of
+                                                   // this configuration's technique
+    double frameMs = 0.0;              // median wall-clock ms of a whole timed frame
+    double giMs = 0.0;                 // sum of the technique's pass medians (voxel/*, atlas/*)
+    std::vector<gl::PassTiming> passes;   // per-pass medians over the timed frames
+    std::size_t memoryBytes = 0;       // every GPU allocation of the renderer
+    std::size_t giMemoryBytes = 0;     // the GI technique's allocations alone
+    double relRmseIndirect = 0.0;      // measureImageError(indirect, reference indirect)
+    double relRmseFinal = 0.0;         // measureImageError(final, reference final)
+    double energyRatioIndirect = 0.0;  // sum ours / sum reference, indirect component
+    double referenceNoiseIndirect = 0.0;   // ReferenceResult::noise of the reference used
+    double referenceNoiseFinal = 0.0;
+    int referenceSpp = 0;
+    bool pareto = false;               // on its scene's and series' frontier (BenchReport)
+    double frameRatio = 0.0;           // frameMs / the base configuration's (BenchReport)
+};
+
+struct RunOptions {
+    int warmupFrames = 2;
+    int timedFrames = 3;
+};
+
+// One line per finished configuration: "[i/n]", the ETA and the measured numbers.
+class BenchProgress {
+public:
+    BenchProgress(int total, double totalCost, std::FILE* out);
+    void report(const BenchMeasurement& m, double cost);
+    double elapsedSeconds() const;
+
+private:
+    int mTotal, mDone = 0;
+    double mTotalCost, mDoneCost = 0.0;
+    std::FILE* mOut;
+    std::chrono::steady_clock::time_point mStart;
+};
+
+class BenchRunner {
+public:
+    BenchRunner(const Settings& base, RunOptions options);
+
+    // Renders (or loads from the disk cache) the ground truth of `scene`. Empty on failure.
+    [[nodiscard]] reference::ReferenceResult reference(const BenchScene& scene,
+            std::string& error) const;
+
+    // Measures every configuration of `scene` with a current GL context. False only when the
+    // renderer cannot be set up at all (`error`); unavailable configurations are results.
+    [[nodiscard]] bool run(const BenchScene& scene, const reference::ReferenceResult& reference,
+            BenchProgress& progress, std::vector<BenchMeasurement>& results,
+            std::string& error) const;
+
+private:
+    Settings mBase;
+    RunOptions mOptions;
+};
+
+} // namespace gi::bench

@@ -1,0 +1,28 @@
+// Normalisation and dilation (shaders/atlas/dilate.frag): the gather sums times 1/N over
+// every set so far give E_ind per texel; empty texels within atlas.dilation.x texels of a
+// chart take its nearest texels' mean, so bilinear lookups at chart borders never read black.
+// Inputs : AtlasTextures sums, AtlasUniforms (sampling.w = 1 / samples, dilation radius).
+// Outputs: AtlasTextures lit (RGBA16F, rgb = E_ind in W/m^2, a = 1 surface / 0.5 dilated).
+#pragma once
+
+#include "gi/atlas/AtlasTextures.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+
+namespace gi::atlas {
+
+class AtlasDilatePass {
+public:
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    bool attach(const AtlasTextures& textures, std::string& error);
+    void execute(const AtlasTextures& textures, const gl::Buffer& atlasUniforms,
+            gl::GpuProfiler& profiler);
+
+private:
+    gl::ProgramRef mProgram;
+    gl::Framebuffer mFramebuffer;
+    gl::VertexArray mEmpty;
+    int mResolution = 0;
+};
+
+} // namespace gi::atlas

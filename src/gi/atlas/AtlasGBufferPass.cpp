@@ -1,0 +1,77 @@
+#include "gi/atlas/AtlasGBufferPass.h"
+
+#include "gl/Shared.h"
+
+namespace gi::atlas {
+
+bool AtlasGBufferPass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mExact = shaders.build({"atlas/gbuffer",
+                                   {{GL_VERTEX_SHADER, "atlas/gbuffer.vert"},
+                                           {GL_FRAGMENT_SHADER, "atlas/gbuffer.frag"}},
+                                   {}},
+            error);
+    if (!mExact) return false;
+    mConservative = shaders.build({"atlas/gbuffer_conservative",
+                                          {{GL_VERTEX_SHADER, "atlas/gbuffer.vert"},
+                                                  {GL_GEOMETRY_SHADER, "atlas/gbuffer.geom"},
+                                                  {GL_FRAGMENT_SHADER, "atlas/gbuffer.frag"}},
+                                          {"CONSERVATIVE"}},
+            error);
+    return bool(mConservative);
+}
+
+bool AtlasGBufferPass::attach(const AtlasTextures& textures, std::string& error) {
+    mResolution = textures.resolution;
+    mDepth = gl::createTexture2D(
+            GL_DEPTH_COMPONENT32F, {mResolution, mResolution}, 1, "atlas/gbuffer_depth");
+    mFramebuffer = gl::createFramebuffer("atlas/gbuffer");
+    const GLuint fbo = mFramebuffer.id();
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, textures.direct.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, textures.normal.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, textures.position.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, textures.albedo.id(), 0);
+    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
+    const GLenum buffers[] = {
+            GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+    glNamedFramebufferDrawBuffers(fbo, 4, buffers);
+    return gl::framebufferComplete(mFramebuffer, "atlas/gbuffer", error);
+}
+
+void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "atlas/gbuffer");
+    (void)out;
+    const GLuint fbo = mFramebuffer.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, mResolution, mResolution);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float clearDepth = 1.0f;
+    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clearDepth);
+
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
+    in.shadows.bind();
+    // Triangles may land in the atlas with either winding: no culling in either draw.
+    glUseProgram(mExact.id());
+    in.scene.drawAll(mExact.id(), false, &in.geometry.vertexArray());
+    glUseProgram(mConservative.id());
+    in.scene.drawAll(mConservative.id(), false, &in.geometry.vertexArray());
+    glUseProgram(0);
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::vector<gl::MemoryItem> AtlasGBufferPass::memory() const {
+    return {{"atlas/gbuffer_depth",
+            gl::textureBytes(GL_DEPTH_COMPONENT32F, glm::ivec3(mResolution, mResolution, 1), 1)}};
+}
+
+} // namespace gi::atlas

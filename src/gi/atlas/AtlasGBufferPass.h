@@ -1,0 +1,48 @@
+// Atlas G-buffer (thesis 4.4): the scene drawn with every vertex at its atlas coordinate into
+// one framebuffer with four targets — direct radiance (Lambert, shadowed, every light), normal,
+// world position with the texel's sample area, albedo; alpha 0 = no surface. Two draws: an
+// exact one (texel centres inside a triangle; these texels are the gather's senders and carry
+// their surface area) and a conservative one (geometry shader, gbuffer.geom) that fills every
+// further texel a triangle touches, so bilinear lookups inside a chart never read an empty
+// texel. A depth buffer keeps the exact draw's texels.
+// Inputs : GpuScene (draws, materials, lights), AtlasGeometry, ShadowPass (maps already
+//          rendered), frame UBO (light count, shadows on/off), AtlasUniforms (resolution).
+// Outputs: AtlasTextures direct, normal, position, albedo.
+#pragma once
+
+#include "gi/atlas/AtlasGeometry.h"
+#include "gi/atlas/AtlasTextures.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "render/ShadowPass.h"
+#include "scene/GpuScene.h"
+
+namespace gi::atlas {
+
+class AtlasGBufferPass {
+public:
+    struct Inputs {
+        const scene::GpuScene& scene;
+        const AtlasGeometry& geometry;
+        const render::ShadowPass& shadows;
+        const gl::Buffer& frameUniforms; // FrameUniforms, std140
+        const gl::Buffer& atlasUniforms; // AtlasUniforms, std140
+    };
+    struct Outputs {
+        const AtlasTextures& textures;
+    };
+
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    // Attaches the layers; false with a message if the framebuffer is incomplete.
+    bool attach(const AtlasTextures& textures, std::string& error);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
+    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+
+private:
+    gl::ProgramRef mExact, mConservative;
+    gl::Framebuffer mFramebuffer;
+    gl::Texture mDepth;
+    int mResolution = 0;
+};
+
+} // namespace gi::atlas

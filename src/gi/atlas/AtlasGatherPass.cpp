@@ -1,0 +1,66 @@
+#include "gi/atlas/AtlasGatherPass.h"
+
+#include "gl/Shared.h"
+
+namespace gi::atlas {
+
+bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mProgram = shaders.build({"atlas/gather",
+                                     {{GL_VERTEX_SHADER, "atlas/fullscreen.vert"},
+                                             {GL_FRAGMENT_SHADER, "atlas/gather.frag"}},
+                                     {}},
+            error);
+    if (!mProgram) return false;
+    mVoxelProgram = shaders.build({"atlas/gather_voxel",
+                                          {{GL_VERTEX_SHADER, "atlas/fullscreen.vert"},
+                                                  {GL_FRAGMENT_SHADER, "atlas/gather.frag"}},
+                                          {"VISIBILITY_VOXEL"}},
+            error);
+    mEmpty = gl::createVertexArray("atlas/gather");
+    return bool(mVoxelProgram);
+}
+
+bool AtlasGatherPass::attach(const AtlasTextures& textures, std::string& error) {
+    mResolution = textures.resolution;
+    mFramebuffer = gl::createFramebuffer("atlas/gather");
+    glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, textures.sums.id(), 0);
+    return gl::framebufferComplete(mFramebuffer, "atlas/gather", error);
+}
+
+void AtlasGatherPass::clear() {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
+}
+
+void AtlasGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "atlas/gather");
+    const GLuint program = in.occupancy ? mVoxelProgram.id() : mProgram.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glViewport(0, 0, mResolution, mResolution);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    // Sums add up; alpha (receiver written) stays 1.
+    glEnable(GL_BLEND);
+    glBlendEquationSeparate(GL_FUNC_ADD, GL_MAX);
+    glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    glUseProgram(program);
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.direct.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, in.textures.normal.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_SAMPLES, in.samples.id());
+    if (in.occupancy) {
+        glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
+    }
+    glBindVertexArray(mEmpty.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glDisable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace gi::atlas

@@ -1,0 +1,40 @@
+// Atlas gather (thesis 4.6): one fragment per atlas texel reads N sample texels at the
+// Hammersley points and adds the senders' direct light (estimator and visibility in
+// shaders/atlas/gather.frag). The result is added to running sums by blending, so successive
+// rotated sample sets accumulate (progressive mode); clear() starts over.
+// Inputs : AtlasTextures direct, normal, position; the Hammersley texture (RG32F, N x 1);
+//          AtlasUniforms (R, N, estimator, rotation offset, estimator constant); optionally a
+//          voxel occupancy volume for visibility.
+// Outputs: AtlasTextures sums (RGBA32F): rgb += estimator constant x sum over this set,
+//          a = 1 where a receiver was written.
+#pragma once
+
+#include "gi/GiTechnique.h"
+#include "gi/atlas/AtlasTextures.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+
+namespace gi::atlas {
+
+class AtlasGatherPass {
+public:
+    struct Inputs {
+        const AtlasTextures& textures;
+        const gl::Texture& samples;
+        const gl::Buffer& atlasUniforms;
+        const OccupancyVolume* occupancy; // nullptr: no visibility test
+    };
+
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    bool attach(const AtlasTextures& textures, std::string& error);
+    void clear();
+    void execute(const Inputs& in, gl::GpuProfiler& profiler);
+
+private:
+    gl::ProgramRef mProgram, mVoxelProgram;
+    gl::Framebuffer mFramebuffer;
+    gl::VertexArray mEmpty;
+    int mResolution = 0;
+};
+
+} // namespace gi::atlas

@@ -1,0 +1,81 @@
+// Texture-atlas GI (SEEDS.md section 2; Merz 2010, "Atlas-basierte globale Beleuchtung im
+// Bildraum"): the indirect light is gathered on an atlas that holds every surface of the
+// scene, so it does not depend on what the camera sees (thesis 3.1). Per frame:
+//   1. atlas G-buffer: direct radiance, normal, position + sample area, albedo (4.4),
+//   2. gather: N Hammersley samples per texel (4.5, 4.6), area-form or thesis weighting,
+//      optional voxel visibility, added to running sums,
+//   3. normalise and dilate into the gutters -> lit atlas of E_ind (W/m^2),
+//   4. resolve: the lit atlas seen from the camera -> screen-space E_ind (4.7).
+// Progressive mode (the thesis' future work, 5.4): a static scene's G-buffer is built once and
+// each frame adds one more rotated sample set until atlas.target_samples; changes to lights,
+// geometry or settings start over. The atlas parameterisation (AtlasBuilder) is built when
+// the resolution or gutter changes, through the disk cache (AtlasCache).
+#pragma once
+
+#include "gi/GiTechnique.h"
+#include "gi/atlas/AtlasCache.h"
+#include "gi/atlas/AtlasDebugViewPass.h"
+#include "gi/atlas/AtlasDilatePass.h"
+#include "gi/atlas/AtlasGBufferPass.h"
+#include "gi/atlas/AtlasGatherPass.h"
+#include "gi/atlas/AtlasGeometry.h"
+#include "gi/atlas/AtlasResolvePass.h"
+#include "gi/atlas/AtlasTextures.h"
+#include "gl/Shared.h"
+
+namespace gi::atlas {
+
+class AtlasGi final : public GiTechnique {
+public:
+    const char* name() const override { return "atlas"; }
+    bool init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) override;
+    bool configure(const Settings& settings, std::string& error) override;
+    void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
+    GiOutputs outputs() const override;
+    std::vector<gl::MemoryItem> memory() const override;
+
+    // Samples per texel accumulated into the lit atlas so far (progressive mode's progress).
+    int accumulatedSamples() const { return mSamplesDone; }
+    // For tests and the overlay.
+    const Atlas& atlas() const { return mAtlas; }
+    const AtlasBuildInfo& buildInfo() const { return mBuildInfo; }
+    const AtlasTextures& textures() const { return mTextures; }
+
+private:
+    bool buildAtlasGeometry(std::string& error);
+    void writeUniforms();
+    bool inputsChanged(const GiFrameInputs& in);
+
+    AtlasMesh mMesh;
+    Atlas mAtlas;
+    AtlasBuildInfo mBuildInfo;
+    AtlasSettings mSettings;
+    ShadowSettings mShadowSettings;
+    bool mConfigured = false;
+
+    AtlasGeometry mGeometry;
+    AtlasTextures mTextures;
+    gl::Texture mSamples;
+    gl::Buffer mUniforms;
+    shader::AtlasUniforms mUniformData{};
+
+    // What the current G-buffer and sums were computed for.
+    bool mGBufferValid = false;
+    int mSamplesDone = 0;
+    std::uint32_t mSetIndex = 0;   // rotated sets accumulated since the last restart
+    std::uint32_t mFrameIndex = 0; // frames since configure (non-progressive rotation)
+    std::vector<scene::Light> mLights;
+    const scene::GpuScene* mScene = nullptr;
+    glm::vec3 mOccupancyEye{0.0f};
+    bool mHadOccupancy = false;
+    bool mWarnedNoOccupancy = false;
+    bool mShowDebug = false;
+
+    AtlasGBufferPass mGBuffer;
+    AtlasGatherPass mGather;
+    AtlasDilatePass mDilate;
+    AtlasResolvePass mResolve;
+    AtlasDebugViewPass mDebugView;
+};
+
+} // namespace gi::atlas

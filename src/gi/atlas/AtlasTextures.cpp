@@ -1,0 +1,41 @@
+#include "gi/atlas/AtlasTextures.h"
+
+namespace gi::atlas {
+namespace {
+
+constexpr GLenum kDirectFormat = GL_RGBA16F, kNormalFormat = GL_RGBA16F,
+                 kPositionFormat = GL_RGBA32F, kAlbedoFormat = GL_RGBA16F, kSumsFormat = GL_RGBA32F,
+                 kLitFormat = GL_RGBA16F;
+
+gl::Texture layer(GLenum format, int resolution, GLenum filter, const char* label) {
+    gl::Texture texture = gl::createTexture2D(format, {resolution, resolution}, 1, label);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, filter);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+} // namespace
+
+void AtlasTextures::allocate(int size) {
+    resolution = size;
+    direct = layer(kDirectFormat, size, GL_NEAREST, "atlas/direct");
+    normal = layer(kNormalFormat, size, GL_NEAREST, "atlas/normal");
+    position = layer(kPositionFormat, size, GL_NEAREST, "atlas/position");
+    albedo = layer(kAlbedoFormat, size, GL_NEAREST, "atlas/albedo");
+    sums = layer(kSumsFormat, size, GL_NEAREST, "atlas/sums");
+    lit = layer(kLitFormat, size, GL_LINEAR, "atlas/lit");
+}
+
+std::vector<gl::MemoryItem> AtlasTextures::memory() const {
+    const glm::ivec3 size(resolution, resolution, 1);
+    return {{"atlas/direct", gl::textureBytes(kDirectFormat, size, 1)},
+            {"atlas/normal", gl::textureBytes(kNormalFormat, size, 1)},
+            {"atlas/position", gl::textureBytes(kPositionFormat, size, 1)},
+            {"atlas/albedo", gl::textureBytes(kAlbedoFormat, size, 1)},
+            {"atlas/sums", gl::textureBytes(kSumsFormat, size, 1)},
+            {"atlas/lit", gl::textureBytes(kLitFormat, size, 1)}};
+}
+
+} // namespace gi::atlas
