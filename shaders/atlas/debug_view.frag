@@ -46,7 +46,8 @@ void main() {
     vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
     if (materialCutOut(m, baseColor.a)) discard;
     int resolution = atlas.size.x;
-    ivec2 texel = clamp(ivec2(floor(vin.atlasUv * float(resolution))), ivec2(0), ivec2(resolution - 1));
+    ivec2 texel = clamp(ivec2(floor(vin.atlasUv * float(resolution))), ivec2(0),
+            ivec2(resolution - 1));
     vec3 color;
     switch (atlas.size.w) {
     case ATLAS_VIEW_DIRECT: color = texelFetch(atlasDirect, texel, 0).rgb; break;

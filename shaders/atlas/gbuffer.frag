@@ -37,7 +37,9 @@ layout(location = 3) out vec4 outAlbedo;
 void main() {
 #ifdef CONSERVATIVE
     vec2 texelMin = gl_FragCoord.xy - 0.5, texelMax = gl_FragCoord.xy + 0.5;
-    if (any(greaterThan(texelMin, texelBounds.zw)) || any(lessThan(texelMax, texelBounds.xy))) discard;
+    bool outside = any(greaterThan(texelMin, texelBounds.zw)) ||
+                   any(lessThan(texelMax, texelBounds.xy));
+    if (outside) discard;
     float sampleArea = 0.0;
 #else
     // Derivatives before any discard (they need the whole 2x2 quad).

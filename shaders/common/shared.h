@@ -27,6 +27,7 @@
 #define BIND_TEX_VOXEL_ALBEDO       5   // sampler3D rgba16f, rgb = albedo, a = coverage
 #define BIND_TEX_VOXEL_IRRADIANCE   6   // sampler3D rgba16f, rgb = irradiance E (W/m^2)
 #define BIND_TEX_VOXEL_NORMAL       7   // sampler3D rgba16f, xyz = mean normal
+#define BIND_TEX_FILTER_SOURCE      8   // sampler2D rgba16f, traced E_ind + view depth
 
 // Texture units of the atlas passes (gi/atlas). Atlas layers are R x R, texel (i, j) covers
 // atlas coordinates [i, i+1) x [j, j+1) / R; alpha 0 = no surface.
@@ -51,11 +52,13 @@
 #define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = flux / voxel face area (INJECT_AREA)
                                         // or the current light's mean E (INJECT_FRAGMENT)
 #define BIND_IMG_VOXEL_LOCK         4   // r32ui, bit 0 = spinlock, bits 1..31 = fragment count
+#define BIND_IMG_FILTER_TARGET      5   // rgba16f, filtered E_ind + view depth
 
 #define VOXEL_MAX_LEVELS            8
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
+#define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
 
 #define ATLAS_ESTIMATOR_AREA        0   // L cos cos / r^2 x sample area: the rendering equation
 #define ATLAS_ESTIMATOR_MERZ2010    1   // the thesis' eq. 9: L cos(theta_x) x 2 pi / N
@@ -152,6 +155,8 @@ struct VoxelUniforms {                  // std140
     vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
                                         // pixel area (m^2), z = 1 for max-axis coverage in
                                         // propagation, w = unused
+    vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
+                                        // y = 1 to jitter the cone ring per pixel, zw = unused
     mat4 viewProjection;                // injection: world -> clip of the current light view
     vec4 lightIndex;                    // injection: x = index into GpuLight[], yzw = unused
 };

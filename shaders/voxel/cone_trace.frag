@@ -124,9 +124,19 @@ void main() {
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t);
     float cosRing = voxel.traceWeights.z, sinRing = voxel.traceWeights.w;
+    // With voxel.jitter the ring turns by a 4x4 ordered-dither fraction of its 45-degree
+    // spacing, so neighbouring pixels sample 16 different ring directions; the filter pass
+    // averages them back into a smooth result.
+    float ringTurn = 0.0;
+    if (voxel.smoothing.y != 0.0) {
+        const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
+                                          3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
+        ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
+        ringTurn = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 * (PI / 4.0);
+    }
     vec3 e = voxel.traceWeights.x * traceCone(origin, n, maxDistance);
     for (int i = 0; i < 8; ++i) {
-        float phi = float(i) * (PI / 4.0);
+        float phi = float(i) * (PI / 4.0) + ringTurn;
         vec3 dir = cosRing * n + sinRing * (cos(phi) * t + sin(phi) * b);
         e += voxel.traceWeights.y * traceCone(origin, dir, maxDistance);
     }

@@ -162,8 +162,7 @@ int runBench(const Config& config) {
     info.notes = notes;
 
     std::vector<reference::ReferenceResult> references;
-    int total = 0;
-    double totalCost = 0.0;
+    std::vector<bench::BenchProgress::PlannedRun> plan;
     for (const auto& loaded : scenes) {
         references.push_back(runner.reference(loaded->bench, error));
         if (references.back().final.empty()) return fail(1, "reference for " + loaded->bench.path + ": " + error);
@@ -171,23 +170,18 @@ int runBench(const Config& config) {
         info.scenes.push_back({loaded->bench.name, loaded->bench.path, loaded->bench.cameraText,
                 loaded->bench.size, r.spp, r.bounces, r.noise.indirect, r.noise.final});
         for (const bench::BenchConfiguration& c : loaded->bench.configurations) {
-            ++total;
-            totalCost += c.costEstimate * double(loaded->bench.size.x * loaded->bench.size.y) /
-                         (128.0 * 128.0);
+            plan.push_back({loaded->bench.name, c.mode, c.costEstimate});
         }
     }
+    const int total = int(plan.size());
 
     std::printf("voxatlas bench (%s): %d configurations on %zu scene(s), %s\n", info.sweep.c_str(),
             total, scenes.size(), info.glRenderer.c_str());
     std::fflush(stdout);
-    bench::BenchProgress progress(total, totalCost, stdout);
+    bench::BenchProgress progress(plan, stdout);
     std::vector<bench::BenchMeasurement> measurements;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
-        // The ETA's cost units scale with the image size, as the per-pixel passes do.
-        bench::BenchScene scaled = scenes[i]->bench;
-        const double pixels = double(scaled.size.x * scaled.size.y) / (128.0 * 128.0);
-        for (bench::BenchConfiguration& c : scaled.configurations) c.costEstimate *= pixels;
-        if (!runner.run(scaled, references[i], progress, measurements, error)) {
+        if (!runner.run(scenes[i]->bench, references[i], progress, measurements, error)) {
             return fail(1, scenes[i]->bench.path + ": " + error);
         }
     }

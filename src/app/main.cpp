@@ -1,5 +1,6 @@
 // voxatlas: diffuse global illumination by voxel cone tracing and by a texture-atlas gather,
 // measured against a ground-truth renderer. This file only dispatches to the commands.
+#include "app/BenchCommand.h"
 #include "app/CommandLine.h"
 #include "app/InfoCommand.h"
 #include "app/RenderCommand.h"
@@ -22,9 +23,7 @@ int main(int argc, char** argv) {
         case Command::Render: return runRender(*config);
         case Command::Info: return runInfo(*config);
         case Command::View: return runViewer(*config);
-        case Command::Bench:
-            std::fprintf(stderr, "voxatlas bench: not available in this build yet\n");
-            return 2;
+        case Command::Bench: return runBench(*config);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "voxatlas: internal error: %s\n", e.what());

@@ -260,7 +260,8 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
             }
             out << "fastest is *" << points.front()->configuration.label << "* ("
                 << number(points.front()->frameMs, "%.1f") << " ms, "
-                << percent(points.front()->relRmseIndirect) << " indirect error).\n\n";
+                << percent(points.front()->relRmseIndirect) << " indirect error).\n";
+            if (points.size() > 1) out << "\n";
             for (std::size_t i = 1; i < points.size(); ++i) {
                 const BenchMeasurement& a = *points[i - 1];
                 const BenchMeasurement& b = *points[i];

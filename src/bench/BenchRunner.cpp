@@ -54,20 +54,42 @@ std::map<std::string, std::string> effectiveSettings(const Settings& settings,
 
 } // namespace
 
-BenchProgress::BenchProgress(int total, double totalCost, std::FILE* out)
-    : mTotal(total), mTotalCost(totalCost), mOut(out), mStart(std::chrono::steady_clock::now()) {}
+BenchProgress::BenchProgress(std::vector<PlannedRun> plan, std::FILE* out)
+    : mPlan(std::move(plan)), mOut(out), mLast(std::chrono::steady_clock::now()) {}
 
-double BenchProgress::elapsedSeconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+double BenchProgress::secondsPerCost(const PlannedRun& run) const {
+    double modeSeconds = 0.0, modeCost = 0.0, allSeconds = 0.0, allCost = 0.0;
+    for (const auto& [key, spent] : mSpent) {
+        if (key == std::make_pair(run.scene, run.mode) && spent.second > 0.0) {
+            return spent.first / spent.second;
+        }
+        if (key.second == run.mode) {
+            modeSeconds += spent.first;
+            modeCost += spent.second;
+        }
+        allSeconds += spent.first;
+        allCost += spent.second;
+    }
+    if (modeCost > 0.0) return modeSeconds / modeCost;
+    return allCost > 0.0 ? allSeconds / allCost : 0.0;
 }
 
-void BenchProgress::report(const BenchMeasurement& m, double cost) {
+void BenchProgress::report(const BenchMeasurement& m) {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - mLast).count();
+    mLast = now;
+    if (mDone < mPlan.size()) {
+        const PlannedRun& run = mPlan[mDone];
+        auto& spent = mSpent[{run.scene, run.mode}];
+        spent.first += seconds;
+        spent.second += run.cost;
+    }
     ++mDone;
-    mDoneCost += cost;
-    const double elapsed = elapsedSeconds();
-    const double eta = mDoneCost > 0.0 ? elapsed * (mTotalCost - mDoneCost) / mDoneCost : 0.0;
-    const int width = int(std::to_string(mTotal).size());
-    std::fprintf(mOut, "[%*d/%d] ETA %s  %s %s | %s: ", width, mDone, mTotal,
+    double eta = 0.0;
+    for (std::size_t i = mDone; i < mPlan.size(); ++i) eta += mPlan[i].cost * secondsPerCost(mPlan[i]);
+    const int total = int(mPlan.size());
+    const int width = int(std::to_string(total).size());
+    std::fprintf(mOut, "[%*d/%d] ETA %s  %s %s | %s: ", width, int(mDone), total,
             formatDuration(eta).c_str(), m.scene.c_str(), seriesName(m.configuration).c_str(),
             m.configuration.label.c_str());
     if (!m.available) {
@@ -133,7 +155,7 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
         auto unavailable = [&](const std::string& why) {
             m.available = false;
             m.unavailableReason = why;
-            progress.report(m, configuration.costEstimate);
+            progress.report(m);
             results.push_back(m);
         };
         if (const auto failed = failedModes.find(configuration.mode); failed != failedModes.end()) {
@@ -224,7 +246,7 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
         if (const auto base = baseFrameMs.find(configuration.mode); base != baseFrameMs.end()) {
             m.frameRatio = m.frameMs / base->second;
         }
-        progress.report(m, configuration.costEstimate);
+        progress.report(m);
         results.push_back(m);
     }
     renderer.setMode(render::GiMode::Direct, error);

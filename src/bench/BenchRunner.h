@@ -68,18 +68,29 @@ struct RunOptions {
     int timedFrames = 3;
 };
 
-// One line per finished configuration: "[i/n]", the ETA and the measured numbers.
+// One line per finished configuration: "[i/n]", the ETA and the measured numbers. The ETA
+// sums the cost estimates of the configurations left, each at the seconds per cost unit
+// measured so far for its scene and mode (else for its mode, else overall), so it corrects
+// itself once a scene's first voxel or atlas configuration has run.
 class BenchProgress {
 public:
-    BenchProgress(int total, double totalCost, std::FILE* out);
-    void report(const BenchMeasurement& m, double cost);
-    double elapsedSeconds() const;
+    struct PlannedRun {
+        std::string scene;
+        render::GiMode mode = render::GiMode::Voxel;
+        double cost = 1.0;   // BenchConfiguration::costEstimate
+    };
+    BenchProgress(std::vector<PlannedRun> plan, std::FILE* out);
+    // Call once per configuration, in plan order.
+    void report(const BenchMeasurement& m);
 
 private:
-    int mTotal, mDone = 0;
-    double mTotalCost, mDoneCost = 0.0;
+    double secondsPerCost(const PlannedRun& run) const;
+
+    std::vector<PlannedRun> mPlan;
+    std::size_t mDone = 0;
     std::FILE* mOut;
-    std::chrono::steady_clock::time_point mStart;
+    std::chrono::steady_clock::time_point mLast;
+    std::map<std::pair<std::string, render::GiMode>, std::pair<double, double>> mSpent;   // s, cost
 };
 
 class BenchRunner {

@@ -5,6 +5,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cstdio>
+#include <memory>
 
 namespace gi::atlas {
 namespace {
@@ -52,7 +53,11 @@ bool AtlasGi::buildAtlasGeometry(std::string& error) {
     options.gutter = mSettings.gutter;
     std::unique_ptr<AtlasCache> cache;
     if (mSettings.cache) cache = std::make_unique<AtlasCache>(AtlasCache::defaultDirectory());
-    if (!loadOrBuildAtlas(mMesh, options, cache.get(), mAtlas, mBuildInfo, error)) return false;
+    Atlas atlas;
+    AtlasBuildInfo info;
+    if (!loadOrBuildAtlas(mMesh, options, cache.get(), atlas, info, error)) return false;
+    mAtlas = std::move(atlas);
+    mBuildInfo = std::move(info);
     std::fprintf(stderr,
             "atlas: %zu charts for %zu triangles in %d^2 texels, texel %.4g m, %s %.3f s%s%s\n",
             mAtlas.charts.size(), mAtlas.triangleCount(), mAtlas.resolution, mAtlas.texelSize,

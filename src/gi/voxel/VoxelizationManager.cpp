@@ -19,6 +19,7 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
             "voxel/uniforms");
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
            mPropagate.init(shaders, error) && mTrace.init(shaders, error) &&
+           mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
 }
 
@@ -73,6 +74,7 @@ void VoxelizationManager::writeUniforms() {
     const float boundary = 0.5f * ringAngle;
     const float central = std::sin(boundary) * std::sin(boundary);
     u.traceWeights = glm::vec4(central, (1.0f - central) / 8.0f, std::cos(ringAngle), std::sin(ringAngle));
+    u.smoothing = glm::vec4(float(mSettings.filterRadius), mSettings.jitter ? 1.0f : 0.0f, 0.0f, 0.0f);
     const int coarsest = mVolume.levels() - 1;
     const float rasterPixel = mVolume.extent(coarsest) / float(mSettings.resolution * mSettings.multiplier);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
@@ -127,6 +129,9 @@ void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profi
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
     mTrace.resize(traceSize);
     mTrace.execute({in.scene, in.frameUniforms, mUniforms, mTextures}, profiler);
+    if (mSettings.filterRadius > 0) {
+        mFilter.execute(mTrace.indirect(), mTrace.size(), mUniforms, profiler);
+    }
 
     mShowDebug = in.debugView != DebugView::None;
     if (mShowDebug) {
@@ -141,7 +146,7 @@ void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profi
 
 GiOutputs VoxelizationManager::outputs() const {
     GiOutputs out;
-    out.indirect = &mTrace.indirect();
+    out.indirect = mSettings.filterRadius > 0 ? &mFilter.result() : &mTrace.indirect();
     out.size = mTrace.size();
     out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
     return out;
@@ -150,6 +155,9 @@ GiOutputs VoxelizationManager::outputs() const {
 std::vector<gl::MemoryItem> VoxelizationManager::memory() const {
     std::vector<gl::MemoryItem> items = mTextures.memory();
     for (const gl::MemoryItem& item : mTrace.memory()) items.push_back(item);
+    if (mSettings.filterRadius > 0) {
+        for (const gl::MemoryItem& item : mFilter.memory()) items.push_back(item);
+    }
     return items;
 }
 

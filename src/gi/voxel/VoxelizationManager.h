@@ -7,6 +7,7 @@
 #include "gi/GiTechnique.h"
 #include "gi/voxel/CascadeVolume.h"
 #include "gi/voxel/ConeTracePass.h"
+#include "gi/voxel/IndirectFilterPass.h"
 #include "gi/voxel/InjectPass.h"
 #include "gi/voxel/PropagatePass.h"
 #include "gi/voxel/VoxelDebugViewPass.h"
@@ -48,6 +49,7 @@ private:
     InjectPass mInject;
     PropagatePass mPropagate;
     ConeTracePass mTrace;
+    IndirectFilterPass mFilter;
     VoxelDebugViewPass mDebugView;
 };
 

@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""Draws the speed/accuracy trade of `voxatlas bench`: relative RMSE of the indirect component
+against frame time (log x), one subplot per scene, one marker set per series (voxel, atlas,
+atlas progressive), each series' Pareto frontier (the CSV's `pareto` column) as a step line with
+its points labelled, and the reference's own noise as a dashed floor line.
+
+usage: plot_pareto.py bench.csv pareto.png
+Exit status 0 when the PNG was written, 3 when matplotlib is missing, 2 on bad input.
+"""
+import csv
+import os
+import sys
+
+SERIES_STYLE = {
+    "voxel": ("tab:blue", "o"),
+    "atlas": ("tab:orange", "s"),
+    "atlas progressive": ("tab:green", "^"),
+}
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for row in rows:
+        for key in ("frame_ms", "rel_rmse_indirect", "reference_noise_indirect"):
+            row[key] = float(row[key])
+        row["pareto"] = row["pareto"] == "1"
+        row["frames_accumulated"] = int(row["frames_accumulated"])
+    return rows
+
+
+def main():
+    if len(sys.argv) != 3:
+        print("usage: plot_pareto.py bench.csv pareto.png", file=sys.stderr)
+        return 2
+    csv_path, png_path = sys.argv[1], sys.argv[2]
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print(f"plot_pareto.py: matplotlib is not installed for {sys.executable}", file=sys.stderr)
+        return 3
+    try:
+        rows = read_rows(csv_path)
+    except (OSError, KeyError, ValueError) as e:
+        print(f"plot_pareto.py: {csv_path}: {e}", file=sys.stderr)
+        return 2
+    if not rows:
+        print(f"plot_pareto.py: {csv_path}: no measured configuration", file=sys.stderr)
+        return 2
+
+    scenes = list(dict.fromkeys(row["scene"] for row in rows))
+    fig, axes = plt.subplots(1, len(scenes), figsize=(7.5 * len(scenes), 6.2), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        scene_rows = [r for r in rows if r["scene"] == scene]
+        series_names = list(dict.fromkeys(r["series"] for r in scene_rows))
+        for series in series_names:
+            color, marker = SERIES_STYLE.get(series, ("tab:gray", "D"))
+            points = [r for r in scene_rows if r["series"] == series]
+            ax.scatter([r["frame_ms"] for r in points],
+                       [100 * r["rel_rmse_indirect"] for r in points],
+                       color=color, marker=marker, alpha=0.45, s=30, label=f"{series}")
+            frontier = sorted((r for r in points if r["pareto"]), key=lambda r: r["frame_ms"])
+            if not frontier:
+                continue
+            xs = [r["frame_ms"] for r in frontier]
+            ys = [100 * r["rel_rmse_indirect"] for r in frontier]
+            ax.step(xs, ys, where="post", color=color, linewidth=1.6)
+            ax.scatter(xs, ys, color=color, marker=marker, s=55, edgecolors="black",
+                       linewidths=0.8, zorder=3)
+            for i, r in enumerate(frontier):
+                label = r["config"]
+                # Alternate label sides so neighbouring frontier points do not overprint.
+                dy = 9 if i % 2 == 0 else -13
+                ax.annotate(label, (r["frame_ms"], 100 * r["rel_rmse_indirect"]),
+                            textcoords="offset points", xytext=(6, dy), fontsize=7,
+                            color=color)
+        noise = 100 * scene_rows[0]["reference_noise_indirect"]
+        ax.axhline(noise, color="gray", linestyle="--", linewidth=1)
+        ax.annotate(f"reference noise {noise:.1f} %", (ax.get_xlim()[0], noise),
+                    textcoords="offset points", xytext=(4, 3), fontsize=7, color="gray")
+        ax.set_xscale("log")
+        ax.set_ylim(bottom=0)
+        width, height = scene_rows[0]["width"], scene_rows[0]["height"]
+        ax.set_title(f"{scene} ({width}x{height})")
+        ax.set_xlabel("frame time, ms (log; llvmpipe: compare ratios)")
+        ax.set_ylabel("relative RMSE of the indirect component, %")
+        ax.grid(True, which="both", alpha=0.25)
+        ax.legend(fontsize=8, loc="upper right",
+                  title="◆ frontier (outlined); progressive: error after N frames",
+                  title_fontsize=7)
+    fig.suptitle("voxatlas bench: indirect-light error against frame time", fontsize=12)
+    fig.tight_layout()
+    temporary = png_path + ".tmp"
+    fig.savefig(temporary, dpi=110, format="png")
+    os.replace(temporary, png_path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

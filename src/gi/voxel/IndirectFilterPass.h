@@ -1,0 +1,30 @@
+// Edge-aware smoothing of the cone-traced indirect irradiance at trace resolution (see
+// shaders/voxel/indirect_filter.comp): a depth-weighted box filter of radius voxel.filter
+// texels that, with the per-pixel cone jitter, averages 16 cone rings per pixel.
+// Inputs : ConeTracePass output (RGBA16F, rgb = E_ind W/m^2, a = view depth m), VoxelUniforms.
+// Outputs: RGBA16F texture of the same size and meaning.
+#pragma once
+
+#include "gl/GpuProfiler.h"
+#include "gl/Objects.h"
+#include "gl/ShaderLibrary.h"
+
+#include <glm/glm.hpp>
+
+namespace gi::voxel {
+
+class IndirectFilterPass {
+public:
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    void execute(const gl::Texture& source, glm::ivec2 size, const gl::Buffer& voxelUniforms,
+            gl::GpuProfiler& profiler);
+    const gl::Texture& result() const { return mResult; }
+    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+
+private:
+    gl::ProgramRef mProgram;
+    gl::Texture mResult;
+    glm::ivec2 mSize{0};
+};
+
+} // namespace gi::voxel
