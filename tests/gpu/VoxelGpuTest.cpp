@@ -371,6 +371,9 @@ TEST_P(VoxelGoldenGpuTest, CornellView) {
     ImageTolerance tolerance;
     tolerance.maxFailingFraction = 0.005;
     tolerance.maxMeanAbsDiff = 1.0;
+    // Normals are 8-bit snorm, rounded stochastically in an order that depends on thread
+    // scheduling: one snorm step (1/127) is up to 8/255 after the 0.5 + 0.5n and sRGB encodes.
+    if (GetParam().output == render::OutputComponent::VoxelNormal) tolerance.pixelThreshold = 9;
     const std::string failure = compareWithReference(image, std::string("frame/") + GetParam().name, tolerance);
     EXPECT_TRUE(failure.empty()) << failure;
 }

@@ -9,8 +9,8 @@
 //    seed's and its projection onto the seed's plane overlaps no triangle already in the chart
 //    (checked on a half-texel grid); each chart is rotated to its minimum-area bounding
 //    rectangle and the rectangles are packed with stb_rect_pack at the largest common density
-//    that fits (bisection), each padded by ceil(gutter / 2) texels so charts are `gutter` texels
-//    apart and a one-texel dilation never mixes two charts.
+//    that fits (bisection), each padded by ceil(gutter / 2) texels, so charts are at least
+//    `gutter` texels apart and dilating every chart by its padding never mixes two charts.
 // CPU only, no GL: unit-testable, and cached on disk by AtlasCache.
 #pragma once
 
