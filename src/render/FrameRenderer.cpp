@@ -6,6 +6,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <cstdio>
+
 namespace gi::render {
 
 namespace {
@@ -102,6 +104,29 @@ bool FrameRenderer::setSettings(const Settings& settings, std::string& error) {
     return true;
 }
 
+std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const CameraView& camera,
+        gl::GpuProfiler& profiler) {
+    Settings occupancySettings = mSettings;
+    occupancySettings.voxel.sceneCentred = true;
+    occupancySettings.voxel.coverageMaxAxis = true;
+    std::string error;
+    if (!mOccupancy) {
+        mOccupancy = std::make_unique<voxel::VoxelizationManager>();
+        if (!mOccupancy->init(*mShaders, *mSceneDescription, error)) {
+            std::fprintf(stderr, "atlas visibility: %s\n", error.c_str());
+            mOccupancy.reset();
+            return std::nullopt;
+        }
+    }
+    if (!mOccupancy->configure(occupancySettings, error)) {
+        std::fprintf(stderr, "atlas visibility: %s\n", error.c_str());
+        return std::nullopt;
+    }
+    mOccupancy->updateOccupancy({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize},
+            profiler);
+    return mOccupancy->occupancy();
+}
+
 bool FrameRenderer::setMode(GiMode mode, std::string& error) {
     if (mode == mMode && (mGi || mode == GiMode::Direct)) return true;
     std::unique_ptr<GiTechnique> technique;
@@ -165,7 +190,14 @@ void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
         for (const auto& [component, view] : kDebugViews) {
             if (component == output && outputAvailable(output, mMode)) debugView = view;
         }
-        mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView}, profiler);
+        const bool needsOccupancy =
+                mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL;
+        if (!needsOccupancy) mOccupancy.reset();
+        const std::optional<OccupancyVolume> occupancy =
+                needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
+        mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView,
+                            occupancy ? &*occupancy : nullptr},
+                profiler);
         gi = mGi->outputs();
         if (gi.indirect) {
             frame.screen = glm::vec4(glm::vec2(mRenderSize), glm::vec2(gi.size));
@@ -203,6 +235,11 @@ std::vector<gl::MemoryItem> FrameRenderer::memory() const {
     for (const gl::MemoryItem& item : mShadows.memory()) items.push_back(item);
     if (mGi) {
         for (const gl::MemoryItem& item : mGi->memory()) items.push_back(item);
+    }
+    if (mOccupancy) {
+        for (const gl::MemoryItem& item : mOccupancy->memory()) {
+            items.push_back({"atlas/occupancy/" + item.name, item.bytes});
+        }
     }
     const glm::ivec3 size(mRenderSize, 1);
     items.push_back({"frame/radiance", gl::textureBytes(GL_RGBA32F, size, 1)});

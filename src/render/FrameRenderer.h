@@ -10,6 +10,7 @@
 #include "scene/GpuScene.h"
 #include "render/ShadowPass.h"
 #include "gi/GiTechnique.h"
+#include "gi/voxel/VoxelizationManager.h"
 #include "render/Image.h"
 #include "render/Settings.h"
 #include "scene/Scene.h"
@@ -69,6 +70,7 @@ public:
 
 private:
     void resizeTargets(glm::ivec2 size);
+    std::optional<OccupancyVolume> updateOccupancy(const CameraView& camera, gl::GpuProfiler& profiler);
 
     Settings mSettings;
     std::unique_ptr<scene::GpuScene> mScene;
@@ -80,6 +82,9 @@ private:
     ShadowPass mShadows;
     GiMode mMode = GiMode::Direct;
     std::unique_ptr<GiTechnique> mGi;
+    // Voxel occupancy for the atlas' visibility (atlas.visibility=voxel): a scene-centred
+    // cascade, so the atlas stays independent of the view.
+    std::unique_ptr<voxel::VoxelizationManager> mOccupancy;
     gl::ShaderLibrary* mShaders = nullptr;
     const scene::Scene* mSceneDescription = nullptr;
     ForwardPass mForward;

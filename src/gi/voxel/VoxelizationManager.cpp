@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace gi::voxel {
 namespace {
@@ -82,7 +83,20 @@ void VoxelizationManager::writeUniforms() {
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
-void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+std::function<void(int)> VoxelizationManager::levelSetter() {
+    return [this](int level) {
+        mUniformData.grid.z = level;
+        glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
+    };
+}
+
+void VoxelizationManager::updateOccupancy(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    placeAndVoxelize(in, profiler);
+    mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
+    mShowDebug = false;
+}
+
+void VoxelizationManager::placeAndVoxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     if (mFinestExtent <= 0.0f) {
         mFinestExtent = mSettings.sceneCentred
                 ? CascadeVolume::finestExtentCovering(mSceneBounds)
@@ -101,6 +115,10 @@ void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profi
     }
     mVoxelize.execute({in.scene, mUniforms, mSettings.resolution * mSettings.multiplier},
             {mTextures}, profiler);
+}
+
+void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    placeAndVoxelize(in, profiler);
 
     const int injectResolution = mSettings.injectResolution > 0 ? mSettings.injectResolution
                                                                 : mSettings.resolution;
@@ -118,12 +136,7 @@ void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profi
                             injectResolution, mSettings.injectFragmentMean},
             {mTextures}, profiler);
 
-    mPropagate.execute({mUniforms,
-                               [this](int level) {
-                                   mUniformData.grid.z = level;
-                                   glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
-                               }},
-            mTextures, profiler);
+    mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
 
     const glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));

@@ -26,6 +26,11 @@ public:
     GiOutputs outputs() const override;
     std::vector<gl::MemoryItem> memory() const override;
 
+    // Occupancy only (for the atlas' visibility): places the cascade, clears it, voxelizes
+    // and propagates coverage; no light injection, no tracing.
+    void updateOccupancy(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    [[nodiscard]] OccupancyVolume occupancy() const { return {mTextures.albedo, mUniforms}; }
+
     // For tests and the overlay.
     const CascadeVolume& volume() const { return mVolume; }
     const VoxelTextures& textures() const { return mTextures; }
@@ -33,6 +38,8 @@ public:
 
 private:
     void writeUniforms();
+    void placeAndVoxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    std::function<void(int)> levelSetter();
 
     VoxelSettings mSettings;
     bool mConfigured = false;
