@@ -307,22 +307,36 @@ TEST_F(VoxelGpuTest, CornellFloorBleedsWallColours) {
     EXPECT_GT(right.g / right.r, 1.2 * left.g / left.r);
 }
 
-// The cascade holds the whole scene around the camera, not just the view: with the camera
-// turned so the red wall is out of the picture, the floor next to it still turns red.
+// The cascade holds the whole scene around the camera, not just the view: narrow views of
+// the floor beside the red wall and beside the green wall, neither wall in the picture, still
+// show each wall's colour bleeding onto its side of the floor.
 TEST_F(VoxelGpuTest, OffscreenWallStillLightsTheFloor) {
-    scene::Scene scene = loadCornell();
-    // Looking down at the right half of the floor; the red wall (x = 0) is out of view.
-    scene.cameras[0] = lookAtCamera({0.40f, 0.50f, -0.05f}, {0.40f, 0.0f, -0.15f}, 40.0f);
-    VoxelFrame frame(scene, Settings{}, {64, 64}, render::OutputComponent::Indirect);
-    VoxelFrame reference(loadCornell(), Settings{}, {64, 64}, render::OutputComponent::Indirect);
-    const render::Image image = frame.image();
-    glm::dvec3 sum(0.0);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) sum += glm::dvec3(image.at(x, y));
-    ASSERT_GT(sum.r, 0.0) << "the visible floor receives indirect light";
-    EXPECT_GT(sum.r, 0.0);
-    EXPECT_GT(sum.g, 0.0);
-    (void)reference;
+    auto indirectAt = [&](const glm::vec3& floorPoint) {
+        scene::Scene scene = loadCornell();
+        // 20 degrees wide from 25 cm above: the view spans +-5 cm around the point, which is
+        // 6 cm from the wall, so no wall is in the picture.
+        scene.cameras[0] = lookAtCamera(floorPoint + glm::vec3(0.0f, 0.25f, 0.17f), floorPoint, 20.0f);
+        Settings settings;
+        settings.specular = 0.0f;
+        constexpr int kSize = 32;
+        VoxelFrame frame(scene, settings, {kSize, kSize}, render::OutputComponent::Indirect);
+        const render::Image image = frame.image();
+        glm::dvec3 sum(0.0);
+        for (int y = 12; y < 20; ++y)
+            for (int x = 12; x < 20; ++x) sum += glm::dvec3(image.at(x, y));
+        return sum / 64.0;
+    };
+    const glm::dvec3 redSide = indirectAt({0.06f, 0.0f, -0.15f});
+    const glm::dvec3 greenSide = indirectAt({0.496f, 0.0f, -0.15f});
+    ASSERT_GT(redSide.g, 0.0) << "the floor receives indirect light with the wall out of view";
+    ASSERT_GT(greenSide.r, 0.0);
+    // The reference renderer gives R/G = 1.16 beside the red wall and 0.56 beside the green
+    // one (ratio 2.1); 1.08 keeps the direction with room for the voxel artefacts, while a
+    // cascade without the off-screen walls would give ~1.0.
+    std::printf("off-screen bleeding: red side R/G %.3f, green side R/G %.3f\n",
+            redSide.r / redSide.g, greenSide.r / greenSide.g);
+    EXPECT_GT((redSide.r / redSide.g) / (greenSide.r / greenSide.g), 1.08)
+            << "red side R/G " << redSide.r / redSide.g << ", green side R/G " << greenSide.r / greenSide.g;
 }
 
 // Scored against the path tracer (one bounce, the Lambertian reference): the energy of the
