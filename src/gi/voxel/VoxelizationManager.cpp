@@ -45,6 +45,16 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 " exceeds the largest viewport " + std::to_string(maxViewport[0]);
         return false;
     }
+    // 32 bytes per voxel (VoxelTextures.h); refuse before allocating rather than let the
+    // driver fail (or swap) halfway through a frame.
+    const double bytes = 32.0 * std::pow(double(s.resolution), 3.0) * double(s.levels);
+    constexpr double kBudget = 2.0 * 1024.0 * 1024.0 * 1024.0;
+    if (bytes > kBudget) {
+        error = "voxel.resolution " + std::to_string(s.resolution) + " with voxel.cascades " +
+                std::to_string(s.levels) + " needs " + std::to_string(int(bytes / (1024.0 * 1024.0))) +
+                " MiB of voxel textures, over the 2048 MiB budget";
+        return false;
+    }
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
                             s.levels != mSettings.levels;
     const bool replace = reallocate || s.extent != mSettings.extent ||
