@@ -129,6 +129,7 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
         ImGui::Text("mode %s   output %s   %dx%d   vsync %s", frame.mode.c_str(),
                 frame.output.c_str(), frame.framebufferSize.x, frame.framebufferSize.y,
                 frame.vsync ? "on" : "off");
+        if (!frame.giStatus.empty()) ImGui::TextUnformatted(frame.giStatus.c_str());
         const double fps = frame.frameMs > 0.0 ? 1000.0 / frame.frameMs : 0.0;
         char overlay[64];
         std::snprintf(overlay, sizeof overlay, "%.2f ms  %.1f fps", frame.frameMs, fps);

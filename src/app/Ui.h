@@ -34,6 +34,7 @@ struct UiFrame {
     std::vector<gl::PassTiming> timings;           // GpuProfiler::timings()
     std::vector<gl::MemoryItem> memory;            // FrameRenderer::memory()
     std::string mode;                              // "direct", ...
+    std::string giStatus;                          // GiTechnique::status(), may be empty
     std::string output;                            // "final", "direct", "indirect"
     std::string camera;                            // e.g. "1/2 Camera" or "free"
     std::size_t triangles = 0;

@@ -354,6 +354,7 @@ UiFrame Viewer::uiFrame(double frameMs) const {
     frame.timings = mProfiler.timings();
     frame.memory = mRenderer.memory();
     frame.mode = modeName(mMode);
+    if (const GiTechnique* technique = mRenderer.technique()) frame.giStatus = technique->status();
     frame.output = outputName(mOutput);
     frame.camera = cameraLabel();
     frame.triangles = mScene->triangleCount();

@@ -67,6 +67,8 @@ public:
     virtual void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) = 0;
     virtual GiOutputs outputs() const = 0;
     virtual std::vector<gl::MemoryItem> memory() const = 0;
+    // One line for the overlay: the state a user tunes against (resolution, progress).
+    virtual std::string status() const { return ""; }
 };
 
 } // namespace gi

@@ -209,3 +209,13 @@ std::vector<gl::MemoryItem> AtlasGi::memory() const {
 }
 
 } // namespace gi::atlas
+
+namespace gi::atlas {
+
+std::string AtlasGi::status() const {
+    return "atlas " + std::to_string(mSettings.resolution) + "^2, " +
+           std::to_string(accumulatedSamples()) + " samples accumulated" +
+           (mSettings.progressive ? " of " + std::to_string(mSettings.targetSamples) : "");
+}
+
+} // namespace gi::atlas

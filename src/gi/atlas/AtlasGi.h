@@ -36,6 +36,7 @@ public:
 
     // Samples per texel accumulated into the lit atlas so far (progressive mode's progress).
     int accumulatedSamples() const { return mSamplesDone; }
+    std::string status() const override;
     // For tests and the overlay.
     const Atlas& atlas() const { return mAtlas; }
     const AtlasBuildInfo& buildInfo() const { return mBuildInfo; }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 namespace gi::voxel {
@@ -182,6 +183,18 @@ std::vector<gl::MemoryItem> VoxelizationManager::memory() const {
         for (const gl::MemoryItem& item : mFilter.memory()) items.push_back(item);
     }
     return items;
+}
+
+} // namespace gi::voxel
+
+namespace gi::voxel {
+
+std::string VoxelizationManager::status() const {
+    char line[160];
+    std::snprintf(line, sizeof line, "voxels %d^3 x %d levels, finest %.3g m, coarsest %.3g m, trace %dx%d",
+            mVolume.resolution(), mVolume.levels(), double(mVolume.voxelSize(0)),
+            double(mVolume.voxelSize(mVolume.levels() - 1)), mTrace.size().x, mTrace.size().y);
+    return line;
 }
 
 } // namespace gi::voxel

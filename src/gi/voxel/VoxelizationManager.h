@@ -25,6 +25,7 @@ public:
     void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
     GiOutputs outputs() const override;
     std::vector<gl::MemoryItem> memory() const override;
+    std::string status() const override;
 
     // Occupancy only (for the atlas' visibility): places the cascade, clears it, voxelizes
     // and propagates coverage; no light injection, no tracing.
