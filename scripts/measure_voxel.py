@@ -96,7 +96,9 @@ def main():
     say(f"on {base['renderer']}. Medians of {f} frames after 2 warm-up frames, 1280x720, the")
     say("thesis' reference settings (v=32, l=3, multiplier 8, injection = v, trace scale 1/2)")
     say("unless a row says otherwise. llvmpipe runs on 2 CPU cores: compare ratios, not")
-    say("milliseconds, with the thesis' GTX 1060 figures.\n")
+    say("milliseconds, with the thesis' GTX 1060 figures.")
+    say(f"Load average when the run started: {os.getloadavg()[0]:.1f} (2 cores); other jobs")
+    say("inflate every millisecond and blur ratios between rows measured minutes apart.\n")
 
     say("## Per-pass time at the defaults (Cornell box)\n")
     say("| pass | ms | share of frame |")
