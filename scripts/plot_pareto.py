@@ -13,6 +13,7 @@ import os
 import sys
 
 SERIES_STYLE = {
+    "direct": ("dimgray", "X"),
     "voxel": ("tab:blue", "o"),
     "atlas": ("tab:orange", "s"),
     "atlas progressive": ("tab:green", "^"),
@@ -57,10 +58,11 @@ def main():
     for ax, scene in zip(axes[0], scenes):
         scene_rows = [r for r in rows if r["scene"] == scene]
         noise = 100 * scene_rows[0]["reference_noise_indirect"]
-        frontier_errors = [100 * r["rel_rmse_indirect"] for r in scene_rows if r["pareto"]]
-        # Linear error axis up to well above the frontiers; worse points are drawn at the top
-        # edge with their value, so one broken setting does not flatten everything else.
-        y_max = max(max(frontier_errors, default=100.0) * 2.0, 3.0 * noise, 10.0)
+        errors = sorted(100 * r["rel_rmse_indirect"] for r in scene_rows)
+        # Linear error axis to well above the typical point and above 100 % (no GI); worse
+        # points are drawn at the top edge and listed, so one broken setting does not
+        # flatten everything else.
+        y_max = max(min(2.5 * errors[len(errors) // 2], 1.05 * errors[-1]), 120.0, 3.0 * noise)
         off_scale = []
         labelled = []
         series_names = list(dict.fromkeys(r["series"] for r in scene_rows))
@@ -84,7 +86,7 @@ def main():
             ax.step(xs, ys, where="post", color=color, linewidth=1.6)
             ax.scatter(xs, ys, color=color, marker=marker, s=55, edgecolors="black",
                        linewidths=0.8, zorder=3)
-            labelled.append((color, frontier))
+            labelled.append((series, color, frontier))
         if off_scale:
             ax.text(0.99, 0.02, "off scale (drawn at the top edge):\n" + "\n".join(off_scale),
                     transform=ax.transAxes, ha="right", va="bottom", fontsize=6.5,
@@ -97,7 +99,9 @@ def main():
         # Labels after the axis limits are known: points in the right third of the (log) axis
         # get their label on the left, so it stays inside the plot.
         x_lo, x_hi = (math.log(v) for v in ax.get_xlim())
-        for color, frontier in labelled:
+        for series, color, frontier in labelled:
+            if series == "direct":
+                continue
             for i, r in enumerate(frontier):
                 # Alternate label sides so neighbouring frontier points do not overprint.
                 dy = 8 if i % 2 == 0 else -12
@@ -105,6 +109,9 @@ def main():
                 ax.annotate(r["config"], (r["frame_ms"], 100 * r["rel_rmse_indirect"]),
                             textcoords="offset points", xytext=(-5 if right else 5, dy),
                             ha="right" if right else "left", fontsize=7, color=color)
+        ax.axhline(100.0, color="dimgray", linestyle=":", linewidth=1)
+        ax.text(0.99, 100.0, "100 %: no indirect light at all ", color="dimgray", fontsize=7,
+                va="top", ha="right", transform=ax.get_yaxis_transform())
         ax.axhline(noise, color="gray", linestyle="--", linewidth=1)
         ax.text(0.01, noise, f" reference noise {noise:.1f} %", color="gray", fontsize=7,
                 va="bottom", transform=ax.get_yaxis_transform())

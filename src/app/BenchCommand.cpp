@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -49,6 +50,25 @@ bool isSponza(const std::string& path) {
     std::string stem = fs::path(path).stem().string();
     for (char& c : stem) c = char(std::tolower(static_cast<unsigned char>(c)));
     return stem == "sponza";
+}
+
+// The scene path as reports show it: relative to the source tree when it is inside it or next
+// to it (assets/..., ../shared/...), so committed tables hold no machine-specific paths.
+std::string displayPath(const std::string& path) {
+    std::error_code ec;
+    const fs::path relative = fs::relative(path, dataDirectory(), ec);
+    if (ec || relative.empty()) return path;
+    int parents = 0;
+    for (const fs::path& part : relative) parents += part == "..";
+    return parents <= 1 ? relative.string() : path;
+}
+
+// The first three fields of /proc/loadavg ("0.52 1.10 2.30"), or "" where there is none.
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    if (!(in >> one >> five >> fifteen)) return "";
+    return one + " " + five + " " + fifteen;
 }
 
 std::string localTime() {
@@ -99,7 +119,7 @@ int runBench(const Config& config) {
         if (!loadScene(sceneConfig, loaded->scene, error)) return false;
         bench::BenchScene& b = loaded->bench;
         b.name = name;
-        b.path = path;
+        b.path = displayPath(path);
         b.cameraText = cameraText;
         b.scene = &loaded->scene;
         b.size = config.quick ? quickSize : quickSize * 2;
@@ -160,6 +180,7 @@ int runBench(const Config& config) {
     info.warmupFrames = runOptions.warmupFrames;
     info.timedFrames = runOptions.timedFrames;
     info.notes = notes;
+    info.loadBefore = loadAverage();
 
     std::vector<reference::ReferenceResult> references;
     std::vector<bench::BenchProgress::PlannedRun> plan;
@@ -187,6 +208,7 @@ int runBench(const Config& config) {
     }
 
     bench::finalizeMeasurements(measurements);
+    info.loadAfter = loadAverage();
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!bench::writeBenchReport(outDir, measurements, info, error)) return fail(1, error);
 

@@ -64,6 +64,9 @@ std::vector<std::string> passNames(const std::vector<BenchMeasurement>& measurem
 
 std::string seriesOf(const BenchMeasurement& m) { return seriesName(m.configuration); }
 
+// "x1.23", or "-" when there is no ratio (its base was not measured).
+std::string ratio(double value) { return value > 0.0 ? number(value, "x%.2f") : "-"; }
+
 std::string percent(double fraction) { return number(100.0 * fraction, "%.1f") + " %"; }
 
 std::string mebibytes(std::size_t bytes) {
@@ -121,8 +124,14 @@ void finalizeMeasurements(std::vector<BenchMeasurement>& measurements) {
         m.frameRatio = m.available && base != baseMs.end() && base->second > 0.0
                 ? m.frameMs / base->second
                 : 0.0;
+        const auto direct = baseMs.find({m.scene, render::GiMode::Direct});
+        m.directRatio = m.available && direct != baseMs.end() && direct->second > 0.0
+                ? m.frameMs / direct->second
+                : 0.0;
         m.pareto = false;
         if (!m.available || !std::isfinite(m.relRmseIndirect) || !std::isfinite(m.frameMs)) continue;
+        // At 100 % or more the GI buys nothing: an indirect image of zeros scores exactly 100 %.
+        if (m.configuration.mode != render::GiMode::Direct && m.relRmseIndirect >= 1.0) continue;
         bool dominated = false;
         for (const BenchMeasurement& other : measurements) {
             if (&other == &m || !other.available || other.scene != m.scene ||
@@ -144,7 +153,7 @@ std::vector<std::string> benchCsvColumns(const std::vector<BenchMeasurement>& me
     std::vector<std::string> columns = {"scene", "mode", "series", "config", "base",
             "frames_accumulated", "changed"};
     for (const std::string& key : settingColumns(measurements)) columns.push_back(key);
-    for (const char* column : {"width", "height", "frame_ms", "frame_ratio", "gi_ms"}) {
+    for (const char* column : {"width", "height", "frame_ms", "frame_ratio", "direct_ratio", "gi_ms"}) {
         columns.push_back(column);
     }
     for (const std::string& pass : passNames(measurements)) columns.push_back(passColumn(pass));
@@ -177,6 +186,7 @@ std::string benchCsv(const std::vector<BenchMeasurement>& measurements) {
         row.push_back(std::to_string(m.size.y));
         row.push_back(number(m.frameMs));
         row.push_back(number(m.frameRatio));
+        row.push_back(number(m.directRatio));
         row.push_back(number(m.giMs));
         for (const std::string& pass : passes) {
             double ms = 0.0;
@@ -208,10 +218,17 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
         << info.date << " in " << formatDuration(info.seconds) << " (references included).\n"
         << "GL: " << info.glRenderer << ", " << info.cores << " CPU cores; passes timed by "
         << info.timing << ". Each configuration: " << info.warmupFrames << " warm-up frames, "
-        << "then the median of " << info.timedFrames << " timed frames.\n"
+        << "then the median of " << info.timedFrames << " timed frames.\n";
+    if (!info.loadBefore.empty()) {
+        out << "Load average (1, 5, 15 min) at the start " << info.loadBefore << ", at the end "
+            << info.loadAfter << ": with other work on the cores, timings are slower and noisier "
+            << "than on a quiet machine.\n";
+    }
+    out
         << "`material.specular=0` everywhere (the reference is Lambertian). "
         << "Absolute milliseconds on llvmpipe are not GPU figures: compare the ratios "
-        << "(`x base` = frame time / the mode's base configuration in the same run).\n"
+        << "(`x base` = frame time / the mode's base configuration, `x direct` = frame time / "
+        << "the direct-light-only frame, both in the same run).\n"
         << "Errors are relative RMSE over the reference's geometry pixels; see README.md for "
         << "the formulas and the noise floor.\n\n";
     for (const std::string& note : info.notes) out << "- " << note << "\n";
@@ -222,11 +239,12 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
             << scene.cameraText << ")\n\n"
             << "Scene `" << scene.path << "`. Reference: " << scene.referenceSpp << " spp, "
             << scene.referenceBounces << " bounce(s); its own estimated noise is "
-            << percent(scene.noiseIndirect) << " (indirect) and " << percent(scene.noiseFinal)
+            << number(100.0 * scene.noiseIndirect, "%.2f") << " % (indirect) and "
+            << number(100.0 * scene.noiseFinal, "%.2f") << " %"
             << " (final) relative RMSE, the floor below which errors are not resolved.\n\n"
-            << "| frontier | series | configuration | frame ms | x base | GI ms | GI MiB | "
+            << "| frontier | series | configuration | frame ms | x base | x direct | GI ms | GI MiB | "
                "rel. RMSE indirect | rel. RMSE final | energy ratio indirect |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|\n";
+            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
         std::vector<const BenchMeasurement*> rows;
         for (const BenchMeasurement& m : measurements) {
             if (m.scene == scene.name && m.available) rows.push_back(&m);
@@ -236,13 +254,15 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
         for (const BenchMeasurement* m : rows) {
             out << "| " << (m->pareto ? "◆" : "") << " | " << seriesOf(*m) << " | "
                 << m->configuration.label << " | " << number(m->frameMs, "%.1f") << " | "
-                << (m->frameRatio > 0.0 ? "x" + number(m->frameRatio, "%.2f") : "-") << " | "
+                << ratio(m->frameRatio) << " | " << ratio(m->directRatio) << " | "
                 << number(m->giMs, "%.1f") << " | " << mebibytes(m->giMemoryBytes) << " | "
                 << percent(m->relRmseIndirect) << " | " << percent(m->relRmseFinal) << " | "
                 << number(m->energyRatioIndirect, "%.3f") << " |\n";
         }
-        out << "\n◆ = on the Pareto frontier of its series (no configuration of the series is "
-               "both at least as fast and at least as accurate on the indirect component).\n\n";
+        out << "\n◆ = on the Pareto frontier of its series: no configuration of the series is "
+               "both at least as fast and at least as accurate on the indirect component, and the "
+               "indirect error is under 100 % (at 100 % the GI does no better than none: direct "
+               "light alone scores exactly 100 %).\n\n";
 
         std::vector<std::string> series;
         for (const BenchMeasurement* m : rows) {
@@ -252,10 +272,11 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
         }
         out << "### Frontier steps (" << scene.name << ")\n\n";
         for (const std::string& name : series) {
+            if (name == render::giModeName(render::GiMode::Direct)) continue;
             const std::vector<const BenchMeasurement*> points = frontier(measurements, scene.name, name);
             out << "**" << name << "**: ";
             if (points.empty()) {
-                out << "no measured point.\n\n";
+                out << "no configuration under 100 % indirect error (none is better than no GI).\n\n";
                 continue;
             }
             out << "fastest is *" << points.front()->configuration.label << "* ("

@@ -4,7 +4,8 @@
 // frontier marked, and what each step along each frontier costs and buys), and pareto.png
 // (drawn by scripts/plot_pareto.py from the CSV). A configuration is on its series' Pareto
 // frontier when no other configuration of the same scene and series is at least as fast and
-// at least as accurate (relative RMSE of the indirect component) and strictly better in one.
+// at least as accurate (relative RMSE of the indirect component) and strictly better in one,
+// and its indirect error is under 100 % (an all-zero indirect image, i.e. no GI, scores 100 %).
 // Files are written under temporary names and renamed, so a failed run leaves no partial file.
 #pragma once
 
@@ -32,6 +33,7 @@ struct BenchRunInfo {
     double seconds = 0.0;     // wall-clock duration of the run (references included)
     std::vector<BenchSceneSummary> scenes;
     std::vector<std::string> notes;   // e.g. a scene that was left out and why
+    std::string loadBefore, loadAfter;   // /proc/loadavg at the start and the end (1, 5, 15 min)
 };
 
 // Marks the Pareto frontier of every (scene, series) and sets each frame ratio against the

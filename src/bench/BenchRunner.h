@@ -61,6 +61,7 @@ struct BenchMeasurement {
     int referenceSpp = 0;
     bool pareto = false;               // on its scene's and series' frontier (BenchReport)
     double frameRatio = 0.0;           // frameMs / the base configuration's (BenchReport)
+    double directRatio = 0.0;          // frameMs / the direct-light-only frame's (BenchReport)
 };
 
 struct RunOptions {

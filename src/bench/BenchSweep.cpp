@@ -86,6 +86,13 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     const int progressiveFrames = std::max(16, options.minProgressiveFrames);
     std::vector<BenchConfiguration> list;
 
+    // The no-GI baseline: what the GI modes' cost is relative to, and 100 % indirect error.
+    BenchConfiguration direct;
+    direct.mode = GiMode::Direct;
+    direct.label = "direct light only";
+    direct.base = true;
+    direct.costEstimate = 0.3;
+
     BenchConfiguration voxelBase = voxel("base (v32 l3 trace 0.5 x8)", {});
     voxelBase.base = true;
     BenchConfiguration voxelFast = voxel("preset fast (v16 trace 0.25 x4)",
@@ -97,11 +104,12 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     if (options.size == SweepSize::Smoke) {
         BenchConfiguration atlasSmall = atlas("res 256, 25 samples", 256, 25);
         atlasSmall.base = true;
-        return {voxelBase, voxelFast, atlasSmall,
+        return {direct, voxelBase, voxelFast, atlasSmall,
                 progressive(256, 25, std::max(4, options.minProgressiveFrames))};
     }
 
     const std::string shortDistance = formatNumber(options.shortDistance);
+    list.push_back(direct);
     list.push_back(voxelBase);
     list.push_back(voxel("v=16", {{"voxel.resolution", "16"}}, 0.5, 0.8));
     list.push_back(voxel("v=64", {{"voxel.resolution", "64"}}, 0.5, 1.5));
@@ -117,8 +125,10 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     list.push_back(voxel("inject 4v", {{"voxel.inject_resolution", "128"}}));
     list.push_back(voxel("fragment-mean inject", {{"voxel.inject_fragment_mean", "1"}}));
     list.push_back(voxelFast);
-    list.push_back(voxel("preset balanced (max-axis, inject 4v)",
-            {{"voxel.coverage_max_axis", "1"}, {"voxel.inject_resolution", "128"}}));
+    list.push_back(voxel("preset balanced (trace 0.25 x4, max-axis)",
+            {{"voxel.trace_scale", "0.25"}, {"voxel.multiplier", "4"},
+                    {"voxel.coverage_max_axis", "1"}},
+            0.25));
     list.push_back(voxel("preset quality (v64 l4 trace 1, max-axis, inject 4v)",
             {{"voxel.resolution", "64"}, {"voxel.cascades", "4"}, {"voxel.trace_scale", "1"},
                     {"voxel.coverage_max_axis", "1"}, {"voxel.inject_resolution", "256"}},

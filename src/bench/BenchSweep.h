@@ -1,6 +1,7 @@
-// The configurations `voxatlas bench` measures. Not the cross product of every parameter (that
-// would be thousands of frames on llvmpipe) but, per GI mode, a one-at-a-time sweep around the
-// mode's base configuration (each row changes one setting) plus a few combined presets:
+// The configurations `voxatlas bench` measures: direct light alone (the cost baseline, and
+// 100 % indirect error by definition), then per GI mode not the cross product of every
+// parameter (thousands of frames on llvmpipe) but a one-at-a-time sweep around the mode's
+// base configuration (each row changes one setting) plus a few combined presets:
 //   voxel: voxel.resolution, voxel.cascades, voxel.trace_scale, voxel.multiplier,
 //          voxel.max_distance, and the options beyond the thesis (scene-centred cascade,
 //          max-axis coverage, injection at 4v, the thesis' fragment-mean injection);
@@ -50,7 +51,7 @@ struct SweepOptions {
 
 [[nodiscard]] std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options);
 
-// The plot series of a configuration: "voxel", "atlas" or "atlas progressive".
+// The plot series of a configuration: "direct", "voxel", "atlas" or "atlas progressive".
 [[nodiscard]] std::string seriesName(const BenchConfiguration& configuration);
 
 // Every key that some configuration changes, in first-use order.

@@ -67,13 +67,13 @@ TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
     std::map<std::string, std::size_t> column;
     for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
     const std::vector<std::string> required = {"scene", "mode", "series", "config", "changed",
-            "width", "height", "frame_ms", "frame_ratio", "gi_ms", "memory_bytes",
+            "width", "height", "frame_ms", "frame_ratio", "direct_ratio", "gi_ms", "memory_bytes",
             "gi_memory_bytes", "rel_rmse_indirect", "rel_rmse_final", "energy_ratio_indirect",
             "reference_noise_indirect", "reference_noise_final", "reference_spp", "pareto",
             "voxel.resolution", "voxel.trace_scale", "atlas.resolution", "atlas.samples",
             "ms_render_forward"};
     for (const std::string& name : required) EXPECT_TRUE(column.count(name)) << "missing column " << name;
-    std::vector<std::string> numeric = {"frame_ms", "frame_ratio", "gi_ms", "memory_bytes",
+    std::vector<std::string> numeric = {"frame_ms", "frame_ratio", "direct_ratio", "gi_ms", "memory_bytes",
             "gi_memory_bytes", "rel_rmse_indirect", "rel_rmse_final", "energy_ratio_indirect",
             "reference_noise_indirect", "reference_noise_final"};
     for (const std::string& name : header) {
@@ -81,7 +81,8 @@ TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
     }
 
     std::set<std::string> modes;
-    int rows = 0, frontier = 0;
+    std::set<std::string> frontierSeries;
+    int rows = 0;
     while (std::getline(csv, line)) {
         if (line.empty()) continue;
         ++rows;
@@ -98,16 +99,18 @@ TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
         }
         EXPECT_GT(std::strtod(fields[column["frame_ms"]].c_str(), nullptr), 0.0) << line;
         EXPECT_GT(std::strtod(fields[column["memory_bytes"]].c_str(), nullptr), 0.0) << line;
-        frontier += fields[column["pareto"]] == "1";
+        if (fields[column["pareto"]] == "1") frontierSeries.insert(fields[column["series"]]);
     }
-    // The smoke sweep has two configurations per mode; a mode the build cannot run is listed
-    // under "Not measured" in bench.md instead.
+    // The smoke sweep has the direct baseline and two configurations per GI mode; a mode the
+    // build cannot run is listed under "Not measured" in bench.md instead.
     const std::string markdown = slurp(dir + "/out/bench.md");
+    EXPECT_TRUE(modes.count("direct")) << "no direct-light baseline row";
     EXPECT_TRUE(modes.count("voxel")) << "no voxel row";
     const bool atlasSkipped = markdown.find("atlas unavailable") != std::string::npos;
     EXPECT_TRUE(modes.count("atlas") || atlasSkipped) << "no atlas row and no reason: " << markdown;
-    EXPECT_GE(rows, 2);
-    EXPECT_GE(frontier, int(modes.size())) << "every series has at least one frontier point";
+    EXPECT_GE(rows, 3);
+    // Direct light alone is the only configuration of its series: always on its frontier.
+    EXPECT_TRUE(frontierSeries.count("direct"));
 
     EXPECT_NE(markdown.find("## cornell_box"), std::string::npos) << markdown;
     EXPECT_NE(markdown.find("◆"), std::string::npos) << markdown;
