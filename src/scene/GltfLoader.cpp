@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cfloat>
 #include <climits>
@@ -160,6 +161,33 @@ std::string externalFileProblem(const FileAccess& access, const std::string& uri
     if (checkSize && bytes.size() != byteLength) {
         return "'" + uri + "' holds " + std::to_string(bytes.size()) +
                " bytes but byteLength is " + std::to_string(byteLength);
+    }
+    if (bytes.empty()) return "'" + uri + "' is empty (0 bytes)";
+    return {};
+}
+
+// Why a data URI cannot serve as a buffer of `byteLength` bytes; empty when it can. Spares the
+// user tinygltf's message, which quotes the whole URI.
+std::string dataUriProblem(const std::string& uri, std::uint64_t byteLength) {
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string::npos || comma < 7 || uri.compare(comma - 7, 7, ";base64") != 0) {
+        return "the data URI is not base64-encoded";
+    }
+    std::uint64_t digits = 0, padding = 0;
+    for (std::size_t i = comma + 1; i < uri.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(uri[i]);
+        if (c == '=') {
+            ++padding;
+        } else if ((std::isalnum(c) || c == '+' || c == '/') && padding == 0) {
+            ++digits;
+        } else {
+            return "the data URI is not valid base64";
+        }
+    }
+    const std::uint64_t decoded = digits * 3 / 4;
+    if (decoded != byteLength) {
+        return "the data URI holds " + std::to_string(decoded) + " bytes but byteLength is " +
+               std::to_string(byteLength);
     }
     return {};
 }
@@ -731,8 +759,7 @@ private:
 
     bool failCycle(int member) {
         std::vector<int> loop{member};
-        for (int n = mParent[std::size_t(member)]; n != member && loop.size() < 64;
-                n = mParent[std::size_t(n)]) {
+        for (int n = mParent[std::size_t(member)]; n != member; n = mParent[std::size_t(n)]) {
             loop.push_back(n);
         }
         std::reverse(loop.begin(), loop.end()); // parent -> child order
@@ -1281,18 +1308,91 @@ std::string diagnoseBuffers(const char* json, std::size_t size, const FileAccess
         if (!buffer.is_object()) continue;
         auto uri = buffer.find("uri");
         auto length = buffer.find("byteLength");
-        if (uri == buffer.end() || !uri->is_string() || isDataUri(uri->get<std::string>())) {
-            continue;
-        }
+        if (uri == buffer.end() || !uri->is_string()) continue;
         std::uint64_t byteLength = 0;
         if (length != buffer.end() && length->is_number_unsigned()) {
             byteLength = length->get<std::uint64_t>();
         }
-        const std::string problem =
-                externalFileProblem(access, uri->get<std::string>(), byteLength, true);
+        const std::string& text = uri->get_ref<const std::string&>();
+        const std::string problem = isDataUri(text)
+                                            ? dataUriProblem(text, byteLength)
+                                            : externalFileProblem(access, text, byteLength, true);
         if (!problem.empty()) return indexed("buffers", long(i)) + ": " + problem;
     }
     return {};
+}
+
+// tinygltf reads an optional index, byteOffset or byteStride that is negative or not an integer
+// as if it were absent; glTF requires non-negative integers, so the JSON itself is checked.
+// Returns "<element>: <what>" for the first offender, empty when there is none.
+std::string checkOptionalIntegers(const char* json, std::size_t size) {
+    struct Property {
+        const char* array;
+        const char* nested; // array inside each element, or nullptr
+        const char* name;
+    };
+    static constexpr Property kProperties[] = {
+            {"bufferViews", nullptr, "byteOffset"},
+            {"bufferViews", nullptr, "byteStride"},
+            {"accessors", nullptr, "byteOffset"},
+            {"accessors", nullptr, "bufferView"},
+            {"meshes", "primitives", "indices"},
+            {"meshes", "primitives", "material"},
+            {"meshes", "primitives", "mode"},
+            {"nodes", nullptr, "mesh"},
+            {"nodes", nullptr, "camera"},
+            {"textures", nullptr, "source"},
+            {"textures", nullptr, "sampler"},
+    };
+    const nlohmann::json root = nlohmann::json::parse(json, json + size, nullptr, false);
+    if (root.is_discarded() || !root.is_object()) return {};
+    auto check = [](const nlohmann::json& object, const std::string& element,
+                         const char* name) -> std::string {
+        if (!object.is_object()) return {};
+        auto value = object.find(name);
+        if (value == object.end() || value->is_number_unsigned()) return {};
+        return element + ": " + name + " " + value->dump() + " is not an integer >= 0";
+    };
+    for (const Property& property : kProperties) {
+        auto array = root.find(property.array);
+        if (array == root.end() || !array->is_array()) continue;
+        for (std::size_t i = 0; i < array->size(); ++i) {
+            const nlohmann::json& item = (*array)[i];
+            const std::string element = indexed(property.array, long(i));
+            std::string problem;
+            if (property.nested == nullptr) {
+                problem = check(item, element, property.name);
+            } else if (item.is_object() && item.contains(property.nested) &&
+                       item[property.nested].is_array()) {
+                const nlohmann::json& nested = item[property.nested];
+                for (std::size_t k = 0; k < nested.size() && problem.empty(); ++k) {
+                    problem = check(nested[k], element + "." + indexed(property.nested, long(k)),
+                            property.name);
+                }
+            }
+            if (!problem.empty()) return problem;
+        }
+    }
+    return {};
+}
+
+// The first bytes of a file that is neither GLB nor a JSON object, for the message.
+std::string leadingBytes(const std::uint8_t* data, std::size_t size) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string text;
+    for (std::size_t i = 0; i < std::min<std::size_t>(size, 4); ++i) {
+        text += std::string(i ? " " : "") + kHex[data[i] >> 4] + kHex[data[i] & 15];
+    }
+    return text;
+}
+
+// True when the text's first character after an optional UTF-8 byte order mark and white
+// space opens a JSON object.
+bool startsLikeJsonObject(const char* text, std::size_t size) {
+    std::size_t i = size >= 3 && std::memcmp(text, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    while (i < size && space(text[i])) ++i;
+    return i < size && text[i] == '{';
 }
 
 bool loadFromBytes(const std::uint8_t* data, std::size_t size, const std::string& name,
@@ -1302,6 +1402,7 @@ bool loadFromBytes(const std::uint8_t* data, std::size_t size, const std::string
         error = name + ": " + element + ": " + what;
         return false;
     };
+    if (size == 0) return fail("file", "is empty (0 bytes)");
     if (size > std::size_t(UINT32_MAX)) return fail("file", "larger than 4 GiB");
     const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
     const char* json = reinterpret_cast<const char*>(data);
@@ -1309,6 +1410,9 @@ bool loadFromBytes(const std::uint8_t* data, std::size_t size, const std::string
     if (binary) {
         std::string what;
         if (!checkGlbContainer(data, size, json, jsonSize, what)) return fail("GLB header", what);
+    } else if (!startsLikeJsonObject(json, jsonSize)) {
+        return fail("file", "is neither GLB (magic 'glTF') nor JSON text holding an object (it "
+                            "starts with bytes " + leadingBytes(data, size) + ")");
     }
     if (jsonNestingDepth(json, jsonSize) > limits.maxJsonDepth) {
         return fail("JSON", "nesting deeper than " + std::to_string(limits.maxJsonDepth) +
@@ -1342,11 +1446,19 @@ bool loadFromBytes(const std::uint8_t* data, std::size_t size, const std::string
             error = name + ": " + buffer;
             return false;
         }
+        // tinygltf quotes whole data URIs; a message stays readable at a few hundred bytes.
+        constexpr std::size_t kMaxLine = 240;
         std::string joined;
-        for (const std::string& line : splitLines(tinyError)) {
+        for (std::string line : splitLines(tinyError)) {
+            if (line.size() > kMaxLine) line = line.substr(0, kMaxLine) + "...";
             joined += (joined.empty() ? "" : "; ") + line;
         }
         return fail("glTF", joined.empty() ? "tinygltf could not parse the file" : joined);
+    }
+    const std::string malformed = checkOptionalIntegers(json, jsonSize);
+    if (!malformed.empty()) {
+        error = name + ": " + malformed;
+        return false;
     }
     SceneBuilder builder(model, name, access, limits, warnings);
     return builder.build(out, error);

@@ -41,6 +41,21 @@ bool readImageSize(const std::uint8_t* bytes, std::size_t size, int& width, int&
     }
     int channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels)) {
+        // stbi_info tries every format and reports the last one's failure, so an image with a
+        // PNG or JPEG signature is read again by that format's own reader, for its own reason.
+        static constexpr std::uint8_t kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+        const bool png = size >= sizeof kPng && std::memcmp(bytes, kPng, sizeof kPng) == 0;
+        const bool jpeg = size >= 2 && bytes[0] == 0xff && bytes[1] == 0xd8;
+        if (png || jpeg) {
+            stbi__context context;
+            stbi__start_mem(&context, bytes, int(size));
+            if (png ? stbi__png_info(&context, nullptr, nullptr, nullptr) == 0
+                    : stbi__jpeg_info(&context, nullptr, nullptr, nullptr) == 0) {
+                error = std::string(png ? "a PNG" : "a JPEG") + " stb_image cannot read (" +
+                        stbi_failure_reason() + ")";
+                return false;
+            }
+        }
         error = std::string("not a PNG or JPEG image stb_image can read (") +
                 stbi_failure_reason() + ")";
         return false;

@@ -306,6 +306,24 @@ TEST(AtlasBuilder, TooManyChartsForTheResolutionIsAClearError) {
     EXPECT_NE(error.find("atlas.resolution 16"), std::string::npos) << error;
 }
 
+// A 1.4 km sliver of 0.5 m^2, and a 1 m triangle 6e-39 m wide (found by the fuzzer): their
+// area alone allows thousands, or 1e21, texels per metre, which once rasterised the first for
+// hours and overflowed the second. Their longest edge bounds the density instead.
+TEST(AtlasBuilder, LongSliversPackQuickly) {
+    const std::vector<std::vector<glm::vec3>> slivers = {
+            {{0, 0, 0}, {1000, 1000, 0}, {1000, 1000.001f, 0}},
+            {{0, 0, 0}, {1, 0, 0}, {0, 0, 5.7856e-39f}},
+    };
+    for (const std::vector<glm::vec3>& corners : slivers) {
+        AtlasMesh mesh;
+        mesh.positions = corners;
+        mesh.normals.assign(3, glm::vec3(0, 0, 1));
+        mesh.indices = {0, 1, 2};
+        const Atlas atlas = build(mesh, 256);
+        expectValidPacking(mesh, atlas);
+    }
+}
+
 TEST(AtlasBuilder, EmptySceneIsAClearError) {
     Atlas atlas;
     std::string error;

@@ -13,18 +13,30 @@ namespace gi::atlas {
 namespace {
 
 constexpr double kSubTexel = 256.0; // fixed-point steps per texel of the rasteriser
+// Limits that keep the rasteriser's 64-bit edge functions exact: vertices within 2^40 texels
+// of the origin and triangles at most 2^22 texels wide (2^30 fixed-point steps), so every
+// product of two coordinate differences stays below 2^62.
+constexpr double kMaxRasterCoordinate = 1099511627776.0; // 2^40 texels
+constexpr std::int64_t kMaxRasterExtent = std::int64_t(1) << 30;
 
-// Texel-centre rasterisation in 24.8 fixed point (see forEachTexelCentre).
-template <class Visit> void rasterise(glm::dvec2 fa, glm::dvec2 fb, glm::dvec2 fc, Visit&& visit) {
+// Texel-centre rasterisation in 24.8 fixed point (see forEachTexelCentre). False, visiting
+// nothing, for a triangle outside the limits above.
+template <class Visit> bool rasterise(glm::dvec2 fa, glm::dvec2 fb, glm::dvec2 fc, Visit&& visit) {
+    for (const glm::dvec2& p : {fa, fb, fc}) {
+        if (!(std::abs(p.x) < kMaxRasterCoordinate && std::abs(p.y) < kMaxRasterCoordinate)) {
+            return false;
+        }
+    }
     auto snap = [](glm::dvec2 p) {
         return glm::i64vec2(std::llround(p.x * kSubTexel), std::llround(p.y * kSubTexel));
     };
     glm::i64vec2 a = snap(fa), b = snap(fb), c = snap(fc);
+    const glm::i64vec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
+    if (hi.x - lo.x > kMaxRasterExtent || hi.y - lo.y > kMaxRasterExtent) return false;
     const auto cross = [](glm::i64vec2 u, glm::i64vec2 v) { return u.x * v.y - u.y * v.x; };
     std::int64_t area = cross(b - a, c - a);
-    if (area == 0) return;
+    if (area == 0) return true;
     if (area < 0) std::swap(b, c);
-    const glm::i64vec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
     const auto step = std::int64_t(kSubTexel);
     const auto half = step / 2;
     // Texels whose centre (i + 1/2) lies in [lo, hi].
@@ -43,9 +55,25 @@ template <class Visit> void rasterise(glm::dvec2 fa, glm::dvec2 fb, glm::dvec2 f
     auto owns = [](glm::i64vec2 d) { return d.y < 0 || (d.y == 0 && d.x > 0); };
     const glm::i64vec2 e0 = b - a, e1 = c - b, e2 = a - c;
     const bool o0 = owns(e0), o1 = owns(e1), o2 = owns(e2);
+    const std::pair<glm::i64vec2, glm::i64vec2> edges[] = {{a, e0}, {b, e1}, {c, e2}};
     for (std::int64_t y = y0; y <= y1; ++y) {
         const std::int64_t py = y * step + half;
-        for (std::int64_t x = x0; x <= x1; ++x) {
+        // Each edge function is linear along the row, w(x0 + k) = w0 - e.y * step * k, so it
+        // bounds k from one side; scanning only that span (widened by 2 for rounding) keeps a
+        // long sliver from costing its whole bounding box. The exact test below decides.
+        double first = 0.0, last = double(x1 - x0);
+        for (const auto& [origin, e] : edges) {
+            const std::int64_t w0 = cross(e, glm::i64vec2(x0 * step + half, py) - origin);
+            if (e.y == 0) {
+                if (w0 < 0) first = last + 1.0;
+                continue;
+            }
+            const double root = double(w0) / double(e.y * step);
+            if (e.y > 0) last = std::min(last, std::floor(root) + 2.0);
+            else first = std::max(first, std::ceil(root) - 2.0);
+        }
+        if (first > last) continue;
+        for (std::int64_t x = x0 + std::int64_t(first); x <= x0 + std::int64_t(last); ++x) {
             const glm::i64vec2 p(x * step + half, py);
             const std::int64_t w0 = cross(e0, p - a), w1 = cross(e1, p - b), w2 = cross(e2, p - c);
             if (w0 < 0 || w1 < 0 || w2 < 0) continue;
@@ -53,6 +81,7 @@ template <class Visit> void rasterise(glm::dvec2 fa, glm::dvec2 fb, glm::dvec2 f
             visit(int(x), int(y));
         }
     }
+    return true;
 }
 
 std::uint64_t cellKey(int x, int y) {
@@ -213,12 +242,15 @@ Segmentation segment(const AtlasMesh& mesh, const std::vector<Triangle>& triangl
             const glm::dvec3 p(mesh.positions[vertex]);
             return glm::dvec2(glm::dot(p, tu), glm::dot(p, tv));
         };
-        // Adds t if its projection is free in the chart's occupancy grid.
+        // Adds t if its projection is free in the chart's occupancy grid (the seed always: a
+        // triangle beyond the rasteriser's limits is only ever a chart of its own).
         auto tryAdd = [&](std::uint32_t t) {
             const std::uint32_t* idx = &mesh.indices[3 * t];
             cells.clear();
-            rasterise(project(idx[0]) * gridScale, project(idx[1]) * gridScale,
-                    project(idx[2]) * gridScale, [&](int x, int y) { cells.emplace_back(x, y); });
+            const bool checked = rasterise(project(idx[0]) * gridScale,
+                    project(idx[1]) * gridScale, project(idx[2]) * gridScale,
+                    [&](int x, int y) { cells.emplace_back(x, y); });
+            if (!checked && t != seed) return false;
             for (const auto& [x, y] : cells) {
                 if (occupancy.occupied(x, y)) return false;
             }
@@ -283,8 +315,10 @@ bool pack(const std::vector<ChartLayout>& charts, double density, int padding, i
         std::vector<glm::ivec2>& origins) {
     std::vector<stbrp_rect> rects(charts.size());
     for (std::size_t i = 0; i < charts.size(); ++i) {
+        // rectangleSize(...) <= resolution, decided before the sizes become ints.
+        const glm::dvec2 texels = charts[i].extent * density + 0.5;
+        if (!(std::max(texels.x, texels.y) < resolution - 2.0 * padding)) return false;
         const glm::ivec2 size = rectangleSize(charts[i], density, padding);
-        if (size.x > resolution || size.y > resolution) return false;
         rects[i].id = int(i);
         rects[i].w = size.x;
         rects[i].h = size.y;
@@ -428,11 +462,14 @@ bool buildAtlas(
     }
 
     std::vector<Triangle> triangles(triangleCount);
-    double totalArea = 0.0;
+    double totalArea = 0.0, longestEdge = 0.0;
     for (std::size_t t = 0; t < triangleCount; ++t) {
         const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]);
-        const glm::dvec3 n = glm::cross(glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - a,
-                glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - a);
+        const glm::dvec3 b(mesh.positions[mesh.indices[3 * t + 1]]);
+        const glm::dvec3 c(mesh.positions[mesh.indices[3 * t + 2]]);
+        longestEdge = std::max({longestEdge, glm::length(b - a), glm::length(c - b),
+                glm::length(a - c)});
+        const glm::dvec3 n = glm::cross(b - a, c - a);
         const double length = glm::length(n);
         if (length > 0.0 && std::isfinite(length)) {
             triangles[t].normal = n / length;
@@ -447,8 +484,11 @@ bool buildAtlas(
     }
     const double resolution = options.resolution;
     const int padding = (options.gutter + 1) / 2;
-    // Upper bound of the density: the whole atlas filled without padding.
-    const double densityBound = resolution / std::sqrt(totalArea);
+    // Upper bound of the density: the whole atlas filled without padding, and no chart longer
+    // than the atlas' diagonal (a sliver's bound: without it a long thin triangle of tiny area
+    // would be rasterised at an astronomical density).
+    const double densityBound = std::min(
+            resolution / std::sqrt(totalArea), std::sqrt(2.0) * resolution / longestEdge);
     // Slivers under a thousandth of a texel have no reliable normal: they join any chart they
     // touch (they cover no texel centre, so they cannot overlap anything there).
     const double sliver = 1e-3 / (densityBound * densityBound);

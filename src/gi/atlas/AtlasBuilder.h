@@ -74,7 +74,8 @@ struct Atlas {
 // Calls visit(x, y) for every texel whose centre lies inside the triangle (a, b, c), given in
 // texel units. Vertices are snapped to 1/256 texel and edges evaluated exactly in integers
 // with a consistent tie rule, so two triangles sharing an edge never both claim a texel and
-// never both miss one. Collapsed triangles claim nothing.
+// never both miss one. Collapsed triangles claim nothing, and so do triangles wider than 2^22
+// texels or beyond 2^40 texels from the origin (their edge functions would overflow).
 void forEachTexelCentre(
         glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, const std::function<void(int, int)>& visit);
 

@@ -17,7 +17,7 @@
 namespace gi::atlas {
 
 // Bump whenever the builder's output for the same inputs changes.
-constexpr std::uint32_t kAtlasCacheFormat = 1;
+constexpr std::uint32_t kAtlasCacheFormat = 2;
 
 // 32 lowercase hex digits.
 [[nodiscard]] std::string atlasCacheKey(const AtlasMesh& mesh, const AtlasOptions& options);
