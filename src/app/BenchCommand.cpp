@@ -42,8 +42,8 @@ SceneChoice secondScene(const Config& config) {
     if (config.scenePath != defaultScenePath()) return {config.scenePath, true};
     const char* env = std::getenv("VOXATLAS_SPONZA");
     if (env && *env) return {env, false};
-    return {(fs::path(dataDirectory()) / "../shared/assets/sponza/Sponza.gltf").lexically_normal().string(),
-            false};
+    const fs::path shared = fs::path(dataDirectory()) / "../shared/assets/sponza/Sponza.gltf";
+    return {shared.lexically_normal().string(), false};
 }
 
 bool isSponza(const std::string& path) {
@@ -92,7 +92,7 @@ int runBench(const Config& config) {
     const bench::SweepSize size = smoke         ? bench::SweepSize::Smoke
                                   : config.quick ? bench::SweepSize::Quick
                                                  : bench::SweepSize::Full;
-    const bench::RunOptions runOptions{2, config.quick ? 3 : 7};
+    const bench::RunOptions runOptions{2, config.quick ? 3 : 7, 3};
     const std::string outDir = config.outDir.empty() ? "docs/results" : config.outDir;
 
     std::error_code ec;
@@ -104,7 +104,9 @@ int runBench(const Config& config) {
 
     Settings base = config.settings;
     base.specular = 0.0f;
-    if (base.reference.spp == Settings{}.reference.spp) base.reference.spp = config.quick ? 64 : 256;
+    if (base.reference.spp == Settings{}.reference.spp) {
+        base.reference.spp = config.quick ? 64 : 256;
+    }
 
     std::vector<std::string> notes;
     std::vector<std::unique_ptr<LoadedScene>> scenes;
@@ -123,9 +125,8 @@ int runBench(const Config& config) {
         b.cameraText = cameraText;
         b.scene = &loaded->scene;
         b.size = config.quick ? quickSize : quickSize * 2;
-        if (!selectCamera(sceneConfig, loaded->scene, float(b.size.x) / float(b.size.y), b.camera, error)) {
-            return false;
-        }
+        const float aspect = float(b.size.x) / float(b.size.y);
+        if (!selectCamera(sceneConfig, loaded->scene, aspect, b.camera, error)) return false;
         const glm::vec3 diagonal = loaded->scene.bounds.max - loaded->scene.bounds.min;
         b.configurations = bench::benchConfigurations({size,
                 bench::shortMaxDistance(glm::length(diagonal)),
@@ -139,7 +140,8 @@ int runBench(const Config& config) {
         return fail(2, error);
     }
     if (smoke) {
-        notes.push_back("VOXATLAS_BENCH_SMOKE=1: the Cornell box and a handful of configurations only.");
+        notes.push_back(
+                "VOXATLAS_BENCH_SMOKE=1: the Cornell box and a handful of configurations only.");
     } else {
         const SceneChoice second = secondScene(config);
         const bool sameAsCornell = fs::exists(second.path) &&
@@ -179,6 +181,7 @@ int runBench(const Config& config) {
     info.cores = int(std::thread::hardware_concurrency());
     info.warmupFrames = runOptions.warmupFrames;
     info.timedFrames = runOptions.timedFrames;
+    info.scoredFrames = runOptions.scoredFrames;
     info.notes = notes;
     info.loadBefore = loadAverage();
 
@@ -186,7 +189,9 @@ int runBench(const Config& config) {
     std::vector<bench::BenchProgress::PlannedRun> plan;
     for (const auto& loaded : scenes) {
         references.push_back(runner.reference(loaded->bench, error));
-        if (references.back().final.empty()) return fail(1, "reference for " + loaded->bench.path + ": " + error);
+        if (references.back().final.empty()) {
+            return fail(1, "reference for " + loaded->bench.path + ": " + error);
+        }
         const reference::ReferenceResult& r = references.back();
         info.scenes.push_back({loaded->bench.name, loaded->bench.path, loaded->bench.cameraText,
                 loaded->bench.size, r.spp, r.bounces, r.noise.indirect, r.noise.final});
@@ -226,9 +231,10 @@ int runBench(const Config& config) {
 
     int measured = 0;
     for (const bench::BenchMeasurement& m : measurements) measured += m.available ? 1 : 0;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("voxatlas bench: %d of %d configurations measured in %d min %02d s; wrote %s/bench.csv, "
-                "bench.md%s\n",
+    const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("voxatlas bench: %d of %d configurations measured in %d min %02d s; wrote "
+                "%s/bench.csv, bench.md%s\n",
             measured, total, int(seconds) / 60, int(seconds) % 60, outDir.c_str(),
             plotted ? ", pareto.png" : " (no plot)");
     return measured > 0 ? 0 : 1;

@@ -78,10 +78,12 @@ std::vector<const BenchMeasurement*> frontier(const std::vector<BenchMeasurement
         const std::string& scene, const std::string& series) {
     std::vector<const BenchMeasurement*> points;
     for (const BenchMeasurement& m : measurements) {
-        if (m.available && m.pareto && m.scene == scene && seriesOf(m) == series) points.push_back(&m);
+        if (m.available && m.pareto && m.scene == scene && seriesOf(m) == series) {
+            points.push_back(&m);
+        }
     }
-    std::sort(points.begin(), points.end(),
-            [](const BenchMeasurement* a, const BenchMeasurement* b) { return a->frameMs < b->frameMs; });
+    std::sort(points.begin(), points.end(), [](const BenchMeasurement* a,
+            const BenchMeasurement* b) { return a->frameMs < b->frameMs; });
     return points;
 }
 
@@ -117,7 +119,9 @@ std::string formatDuration(double seconds) {
 void finalizeMeasurements(std::vector<BenchMeasurement>& measurements) {
     std::map<std::pair<std::string, render::GiMode>, double> baseMs;
     for (const BenchMeasurement& m : measurements) {
-        if (m.available && m.configuration.base) baseMs[{m.scene, m.configuration.mode}] = m.frameMs;
+        if (m.available && m.configuration.base) {
+            baseMs[{m.scene, m.configuration.mode}] = m.frameMs;
+        }
     }
     for (BenchMeasurement& m : measurements) {
         const auto base = baseMs.find({m.scene, m.configuration.mode});
@@ -129,7 +133,9 @@ void finalizeMeasurements(std::vector<BenchMeasurement>& measurements) {
                 ? m.frameMs / direct->second
                 : 0.0;
         m.pareto = false;
-        if (!m.available || !std::isfinite(m.relRmseIndirect) || !std::isfinite(m.frameMs)) continue;
+        if (!m.available || !std::isfinite(m.relRmseIndirect) || !std::isfinite(m.frameMs)) {
+            continue;
+        }
         // At 100 % or more the GI buys nothing: an indirect image of zeros scores exactly 100 %.
         if (m.configuration.mode != render::GiMode::Direct && m.relRmseIndirect >= 1.0) continue;
         bool dominated = false;
@@ -138,8 +144,10 @@ void finalizeMeasurements(std::vector<BenchMeasurement>& measurements) {
                     seriesOf(other) != seriesOf(m) || !std::isfinite(other.relRmseIndirect)) {
                 continue;
             }
-            const bool noWorse = other.frameMs <= m.frameMs && other.relRmseIndirect <= m.relRmseIndirect;
-            const bool better = other.frameMs < m.frameMs || other.relRmseIndirect < m.relRmseIndirect;
+            const bool noWorse =
+                    other.frameMs <= m.frameMs && other.relRmseIndirect <= m.relRmseIndirect;
+            const bool better =
+                    other.frameMs < m.frameMs || other.relRmseIndirect < m.relRmseIndirect;
             if (noWorse && better) {
                 dominated = true;
                 break;
@@ -151,9 +159,10 @@ void finalizeMeasurements(std::vector<BenchMeasurement>& measurements) {
 
 std::vector<std::string> benchCsvColumns(const std::vector<BenchMeasurement>& measurements) {
     std::vector<std::string> columns = {"scene", "mode", "series", "config", "base",
-            "frames_accumulated", "changed"};
+            "frames_accumulated", "scored_frames", "changed"};
     for (const std::string& key : settingColumns(measurements)) columns.push_back(key);
-    for (const char* column : {"width", "height", "frame_ms", "frame_ratio", "direct_ratio", "gi_ms"}) {
+    for (const char* column :
+            {"width", "height", "frame_ms", "frame_ratio", "direct_ratio", "gi_ms"}) {
         columns.push_back(column);
     }
     for (const std::string& pass : passNames(measurements)) columns.push_back(passColumn(pass));
@@ -174,10 +183,10 @@ std::string benchCsv(const std::vector<BenchMeasurement>& measurements) {
     out << "\n";
     for (const BenchMeasurement& m : measurements) {
         if (!m.available) continue;
-        std::vector<std::string> row = {m.scene, render::giModeName(m.configuration.mode), seriesOf(m),
-                m.configuration.label, m.configuration.base ? "1" : "0",
+        std::vector<std::string> row = {m.scene, render::giModeName(m.configuration.mode),
+                seriesOf(m), m.configuration.label, m.configuration.base ? "1" : "0",
                 std::to_string(std::max(1, m.configuration.accumulatedFrames)),
-                changesText(m.configuration)};
+                std::to_string(m.scoredFrames), changesText(m.configuration)};
         for (const std::string& key : keys) {
             const auto value = m.settings.find(key);
             row.push_back(value == m.settings.end() ? "" : value->second);
@@ -218,7 +227,9 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
         << info.date << " in " << formatDuration(info.seconds) << " (references included).\n"
         << "GL: " << info.glRenderer << ", " << info.cores << " CPU cores; passes timed by "
         << info.timing << ". Each configuration: " << info.warmupFrames << " warm-up frames, "
-        << "then the median of " << info.timedFrames << " timed frames.\n";
+        << "then the median of " << info.timedFrames << " timed frames; errors are the root "
+        << "mean square over " << info.scoredFrames
+        << " scored frames (energy ratios: the mean).\n";
     if (!info.loadBefore.empty()) {
         out << "Load average (1, 5, 15 min) at the start " << info.loadBefore << ", at the end "
             << info.loadAfter << ": with other work on the cores, timings are slower and noisier "
@@ -242,8 +253,8 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
             << number(100.0 * scene.noiseIndirect, "%.2f") << " % (indirect) and "
             << number(100.0 * scene.noiseFinal, "%.2f") << " %"
             << " (final) relative RMSE, the floor below which errors are not resolved.\n\n"
-            << "| frontier | series | configuration | frame ms | x base | x direct | GI ms | GI MiB | "
-               "rel. RMSE indirect | rel. RMSE final | energy ratio indirect |\n"
+            << "| frontier | series | configuration | frame ms | x base | x direct | GI ms | "
+               "GI MiB | rel. RMSE indirect | rel. RMSE final | energy ratio indirect |\n"
             << "|---|---|---|---|---|---|---|---|---|---|---|\n";
         std::vector<const BenchMeasurement*> rows;
         for (const BenchMeasurement& m : measurements) {
@@ -273,10 +284,12 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
         out << "### Frontier steps (" << scene.name << ")\n\n";
         for (const std::string& name : series) {
             if (name == render::giModeName(render::GiMode::Direct)) continue;
-            const std::vector<const BenchMeasurement*> points = frontier(measurements, scene.name, name);
+            const std::vector<const BenchMeasurement*> points =
+                    frontier(measurements, scene.name, name);
             out << "**" << name << "**: ";
             if (points.empty()) {
-                out << "no configuration under 100 % indirect error (none is better than no GI).\n\n";
+                out << "no configuration under 100 % indirect error (none is better than no "
+                       "GI).\n\n";
                 continue;
             }
             out << "fastest is *" << points.front()->configuration.label << "* ("
@@ -289,7 +302,8 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
                 const double ms = b.frameMs - a.frameMs;
                 const double pp = 100.0 * (a.relRmseIndirect - b.relRmseIndirect);
                 out << "- *" << a.configuration.label << "* -> *" << b.configuration.label
-                    << "*: +" << number(ms, "%.1f") << " ms (x" << number(b.frameMs / a.frameMs, "%.2f")
+                    << "*: +" << number(ms, "%.1f") << " ms ("
+                    << ratio(b.frameMs / a.frameMs)
                     << "), indirect error " << percent(a.relRmseIndirect) << " -> "
                     << percent(b.relRmseIndirect) << ", " << number(ms / std::max(pp, 1e-9), "%.1f")
                     << " ms per percentage point\n";
@@ -360,14 +374,17 @@ bool runPlotScript(const std::string& python, const std::string& script,
         ::close(pipeFds[1]);
         const int devNull = ::open("/dev/null", O_RDONLY);
         if (devNull >= 0) ::dup2(devNull, 0);
-        const char* argv[] = {python.c_str(), script.c_str(), csvPath.c_str(), pngPath.c_str(), nullptr};
+        const char* argv[] = {python.c_str(), script.c_str(), csvPath.c_str(), pngPath.c_str(),
+                nullptr};
         ::execv(python.c_str(), const_cast<char* const*>(argv));
         ::_exit(127);
     }
     ::close(pipeFds[1]);
     std::string output;
     char buffer[4096];
-    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) output.append(buffer, std::size_t(n));
+    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
+        output.append(buffer, std::size_t(n));
+    }
     ::close(pipeFds[0]);
     int status = 0;
     ::waitpid(pid, &status, 0);

@@ -29,7 +29,7 @@ struct BenchRunInfo {
     std::string glRenderer;   // GL_RENDERER / GL_VERSION of the context
     std::string timing;       // how passes were timed
     int cores = 0;
-    int warmupFrames = 0, timedFrames = 0;
+    int warmupFrames = 0, timedFrames = 0, scoredFrames = 0;
     double seconds = 0.0;     // wall-clock duration of the run (references included)
     std::vector<BenchSceneSummary> scenes;
     std::vector<std::string> notes;   // e.g. a scene that was left out and why

@@ -1,5 +1,6 @@
 #include "bench/BenchRunner.h"
 
+#include "gl/Limits.h"
 #include "gl/ShaderLibrary.h"
 #include "reference/ImageMetrics.h"
 #include "reference/ProgressBar.h"
@@ -52,6 +53,26 @@ std::map<std::string, std::string> effectiveSettings(const Settings& settings,
     return values;
 }
 
+struct ScoredErrors {
+    double relativeRmse = 0.0;
+    double energyRatio = 0.0;
+};
+
+// Errors over several frames of a configuration: the root mean square of the per-frame
+// relative RMSE (one frame of a stochastic technique, e.g. one atlas sample set, can be far
+// luckier or unluckier than the next) and the mean energy ratio.
+ScoredErrors scoreFrames(const std::vector<render::Image>& frames, const render::Image& reference,
+        const std::vector<float>& coverage) {
+    double squares = 0.0, energy = 0.0;
+    for (const render::Image& image : frames) {
+        const reference::ImageErrors e = reference::measureImageError(image, reference, coverage);
+        squares += e.relativeRmse * e.relativeRmse;
+        energy += e.energyRatio;
+    }
+    const double n = double(std::max<std::size_t>(frames.size(), 1));
+    return {std::sqrt(squares / n), energy / n};
+}
+
 } // namespace
 
 BenchProgress::BenchProgress(std::vector<PlannedRun> plan, std::FILE* out)
@@ -86,7 +107,9 @@ void BenchProgress::report(const BenchMeasurement& m) {
     }
     ++mDone;
     double eta = 0.0;
-    for (std::size_t i = mDone; i < mPlan.size(); ++i) eta += mPlan[i].cost * secondsPerCost(mPlan[i]);
+    for (std::size_t i = mDone; i < mPlan.size(); ++i) {
+        eta += mPlan[i].cost * secondsPerCost(mPlan[i]);
+    }
     const int total = int(mPlan.size());
     const int width = int(std::to_string(total).size());
     std::fprintf(mOut, "[%*d/%d] ETA %s  %s %s | %s: ", width, int(mDone), total,
@@ -113,14 +136,16 @@ reference::ReferenceResult BenchRunner::reference(const BenchScene& scene,
         std::string& error) const {
     const reference::ReferenceCache cache(reference::ReferenceCache::defaultDirectory());
     reference::CachedRenderStatus status;
-    reference::ProgressBar bar("reference " + scene.name + " " + std::to_string(scene.size.x) + "x" +
-            std::to_string(scene.size.y) + ", " + std::to_string(mBase.reference.spp) + " spp");
+    reference::ProgressBar bar("reference " + scene.name + " " + std::to_string(scene.size.x) +
+            "x" + std::to_string(scene.size.y) + ", " + std::to_string(mBase.reference.spp) +
+            " spp");
     reference::ReferenceResult result = reference::renderReferenceCached(*scene.scene,
             scene.camera, scene.size.x, scene.size.y, mBase.reference, cache, status, error,
             bar.callback());
     bar.finish();
     if (!status.storeError.empty()) {
-        std::fprintf(stderr, "voxatlas bench: reference not cached: %s\n", status.storeError.c_str());
+        std::fprintf(stderr, "voxatlas bench: reference not cached: %s\n",
+                status.storeError.c_str());
     }
     if (!result.final.empty()) {
         std::fprintf(stderr,
@@ -167,13 +192,15 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
 
         // Every configuration starts from a new technique: no running average, accumulated
         // sample set or cached G-buffer carries over from the previous one.
-        if (!renderer.setMode(render::GiMode::Direct, why) || !renderer.setSettings(settings, why)) {
+        if (!renderer.setMode(render::GiMode::Direct, why) ||
+                !renderer.setSettings(settings, why)) {
             unavailable(why);
             continue;
         }
         // Fails when the build has no such technique or it cannot honour these settings.
         if (!renderer.setMode(configuration.mode, why)) {
-            unavailable(std::string(render::giModeName(configuration.mode)) + " unavailable: " + why);
+            unavailable(std::string(render::giModeName(configuration.mode)) + " unavailable: " +
+                        why);
             continue;
         }
 
@@ -183,6 +210,9 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
         };
         for (int i = 0; i < mOptions.warmupFrames; ++i) frame(render::OutputComponent::Final);
         profiler.clearSamples();
+        const int scored = std::max(1, mOptions.scoredFrames);
+        const bool progressive = configuration.accumulatedFrames > 1;
+        std::vector<render::Image> finalImages, indirectImages;
         std::vector<double> frameMs;
         for (int i = 0; i < mOptions.timedFrames; ++i) {
             glFinish();
@@ -192,21 +222,30 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
             frameMs.push_back(std::chrono::duration<double, std::milli>(
                     std::chrono::steady_clock::now() - start).count());
             profiler.collect();
+            // Read back outside the timed window.
+            if (!progressive && i >= mOptions.timedFrames - scored) {
+                finalImages.push_back(renderer.readback());
+            }
         }
         profiler.flush();
         m.passes = profiler.timings();
-        // A progressive configuration is scored after all of its frames.
-        for (int i = mOptions.warmupFrames + mOptions.timedFrames; i < configuration.accumulatedFrames;
-                ++i) {
-            frame(render::OutputComponent::Final);
+        if (progressive) {
+            // Scored after all of its frames; later frames no longer gather.
+            const int rendered = mOptions.warmupFrames + mOptions.timedFrames;
+            for (int i = rendered; i < configuration.accumulatedFrames; ++i) {
+                frame(render::OutputComponent::Final);
+            }
+            for (int i = 0; i < scored; ++i) {
+                frame(render::OutputComponent::Final);
+                finalImages.push_back(renderer.readback());
+            }
         }
-        const render::Image finalImage = renderer.readback();
-        frame(render::OutputComponent::Indirect);
-        const render::Image indirectImage = renderer.readback();
+        for (int i = 0; i < scored; ++i) {
+            frame(render::OutputComponent::Indirect);
+            indirectImages.push_back(renderer.readback());
+        }
         if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
-            char text[64];
-            std::snprintf(text, sizeof text, "OpenGL error 0x%04x while rendering", glError);
-            unavailable(text);
+            unavailable(gl::glErrorName(glError) + " while rendering");
             continue;
         }
 
@@ -228,13 +267,13 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
             m.memoryBytes += item.bytes;
             if (isGiName(item.name)) m.giMemoryBytes += item.bytes;
         }
-        const reference::ImageErrors indirect =
-                reference::measureImageError(indirectImage, reference.indirect, reference.coverage);
-        const reference::ImageErrors final =
-                reference::measureImageError(finalImage, reference.final, reference.coverage);
+        const ScoredErrors indirect =
+                scoreFrames(indirectImages, reference.indirect, reference.coverage);
+        const ScoredErrors final = scoreFrames(finalImages, reference.final, reference.coverage);
         m.relRmseIndirect = indirect.relativeRmse;
         m.energyRatioIndirect = indirect.energyRatio;
         m.relRmseFinal = final.relativeRmse;
+        m.scoredFrames = int(indirectImages.size());
         if (configuration.base) baseFrameMs[configuration.mode] = m.frameMs;
         if (const auto base = baseFrameMs.find(configuration.mode); base != baseFrameMs.end()) {
             m.frameRatio = m.frameMs / base->second;

@@ -4,10 +4,12 @@
 //          before render() to a glFinish after it);
 //   memory FrameRenderer::memory(): bytes of every texture and buffer allocated, in total and
 //          for the GI technique alone;
-//   error  the final image of the last frame and one more frame of the indirect component,
-//          read back as linear radiance and scored against the ground-truth renderer (cached
-//          on disk) over its geometry pixels with measureImageError: relative RMSE of the
-//          indirect component and of the final image, and the indirect mean-energy ratio.
+//   error  the final image of the last timed frames and as many more frames of the indirect
+//          component (a progressive configuration: frames after it has accumulated all of its
+//          sample sets), read back as linear radiance and scored against the ground-truth
+//          renderer (cached on disk) over its geometry pixels with measureImageError: relative
+//          RMSE of the indirect component and of the final image (root mean square over the
+//          scored frames), and the indirect mean-energy ratio (mean over them).
 // A mode the build cannot run (setMode fails) or a configuration it cannot honour is recorded
 // as unavailable with the reason, and the sweep goes on.
 #pragma once
@@ -53,9 +55,12 @@ struct BenchMeasurement {
     std::vector<gl::PassTiming> passes;   // per-pass medians over the timed frames
     std::size_t memoryBytes = 0;       // every GPU allocation of the renderer
     std::size_t giMemoryBytes = 0;     // the GI technique's allocations alone
-    double relRmseIndirect = 0.0;      // measureImageError(indirect, reference indirect)
-    double relRmseFinal = 0.0;         // measureImageError(final, reference final)
+    // Against the reference with measureImageError, over the scored frames: root mean square
+    // of the per-frame relative RMSE, mean of the per-frame energy ratios.
+    double relRmseIndirect = 0.0;      // indirect component
+    double relRmseFinal = 0.0;         // final image
     double energyRatioIndirect = 0.0;  // sum ours / sum reference, indirect component
+    int scoredFrames = 0;
     double referenceNoiseIndirect = 0.0;   // ReferenceResult::noise of the reference used
     double referenceNoiseFinal = 0.0;
     int referenceSpp = 0;
@@ -67,6 +72,8 @@ struct BenchMeasurement {
 struct RunOptions {
     int warmupFrames = 2;
     int timedFrames = 3;
+    int scoredFrames = 3;   // frames whose images are scored (the last timed ones for the final
+                            // image; as many extra frames of the indirect component)
 };
 
 // One line per finished configuration: "[i/n]", the ETA and the measured numbers. The ETA

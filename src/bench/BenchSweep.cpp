@@ -48,7 +48,9 @@ BenchConfiguration atlas(std::string label, int resolution, int samples,
     if (resolution != AtlasSettings{}.resolution) {
         c.changes.push_back({"atlas.resolution", std::to_string(resolution)});
     }
-    if (samples != AtlasSettings{}.samples) c.changes.push_back({"atlas.samples", std::to_string(samples)});
+    if (samples != AtlasSettings{}.samples) {
+        c.changes.push_back({"atlas.samples", std::to_string(samples)});
+    }
     for (SettingChange& change : extra) c.changes.push_back(std::move(change));
     c.costEstimate = atlasCost(resolution, samples, 6);
     return c;
@@ -159,7 +161,9 @@ std::vector<std::string> changedKeys(const std::vector<BenchConfiguration>& conf
     std::vector<std::string> keys;
     for (const BenchConfiguration& c : configurations) {
         for (const SettingChange& change : c.changes) {
-            if (std::find(keys.begin(), keys.end(), change.key) == keys.end()) keys.push_back(change.key);
+            if (std::find(keys.begin(), keys.end(), change.key) == keys.end()) {
+                keys.push_back(change.key);
+            }
         }
     }
     return keys;

@@ -1,51 +1,20 @@
 // `voxatlas bench` end to end, limited by VOXATLAS_BENCH_SMOKE=1 to the Cornell box and a
-// handful of cheap configurations so it fits a test's time: the CSV has every column, every
+// handful of cheap configurations so it gives a quick signal: the CSV has every column, every
 // number in it is finite, every mode the build can run has a row, and the markdown table and
-// the frontier are there. Also the clean refusals of bad input.
+// the frontier are there. Also the clean refusals of bad input. The real `--quick` sweep runs
+// under the `bench` label (tests/bench/QuickBenchTest.cpp).
+#include "BenchOutput.h"
 #include "Process.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <map>
 #include <set>
-#include <sstream>
 
 namespace gi::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Splits one CSV line; fields may be quoted with "" for a literal quote.
-std::vector<std::string> splitCsv(const std::string& line) {
-    std::vector<std::string> fields(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
-            else if (c == '"') quoted = false;
-            else fields.back() += c;
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            fields.emplace_back();
-        } else {
-            fields.back() += c;
-        }
-    }
-    return fields;
-}
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
     const std::string dir = makeTempDir("bench-smoke");
@@ -56,59 +25,25 @@ TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
             170, {"VOXATLAS_BENCH_SMOKE=1", "VOXATLAS_CACHE_DIR=" + dir + "/cache"});
     ASSERT_FALSE(r.timedOut);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_NE(r.out.find("[1/"), std::string::npos) << "one progress line per configuration: " << r.out;
+    EXPECT_NE(r.out.find("[1/"), std::string::npos)
+            << "one progress line per configuration: " << r.out;
     EXPECT_NE(r.out.find("ETA"), std::string::npos) << r.out;
 
-    std::ifstream csv(dir + "/out/bench.csv");
-    ASSERT_TRUE(csv) << "no bench.csv";
-    std::string line;
-    ASSERT_TRUE(std::getline(csv, line));
-    const std::vector<std::string> header = splitCsv(line);
-    std::map<std::string, std::size_t> column;
-    for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
-    const std::vector<std::string> required = {"scene", "mode", "series", "config", "changed",
-            "width", "height", "frame_ms", "frame_ratio", "direct_ratio", "gi_ms", "memory_bytes",
-            "gi_memory_bytes", "rel_rmse_indirect", "rel_rmse_final", "energy_ratio_indirect",
-            "reference_noise_indirect", "reference_noise_final", "reference_spp", "pareto",
-            "voxel.resolution", "voxel.trace_scale", "atlas.resolution", "atlas.samples",
-            "ms_render_forward"};
-    for (const std::string& name : required) EXPECT_TRUE(column.count(name)) << "missing column " << name;
-    std::vector<std::string> numeric = {"frame_ms", "frame_ratio", "direct_ratio", "gi_ms", "memory_bytes",
-            "gi_memory_bytes", "rel_rmse_indirect", "rel_rmse_final", "energy_ratio_indirect",
-            "reference_noise_indirect", "reference_noise_final"};
-    for (const std::string& name : header) {
-        if (name.rfind("ms_", 0) == 0) numeric.push_back(name);
-    }
-
-    std::set<std::string> modes;
-    std::set<std::string> frontierSeries;
-    int rows = 0;
-    while (std::getline(csv, line)) {
-        if (line.empty()) continue;
-        ++rows;
-        const std::vector<std::string> fields = splitCsv(line);
-        ASSERT_EQ(fields.size(), header.size()) << line;
-        modes.insert(fields[column["mode"]]);
-        EXPECT_EQ(fields[column["scene"]], "cornell_box");
-        for (const std::string& name : numeric) {
-            const std::string& text = fields[column[name]];
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            EXPECT_TRUE(!text.empty() && *end == '\0' && std::isfinite(value))
-                    << name << " = '" << text << "' in: " << line;
-        }
-        EXPECT_GT(std::strtod(fields[column["frame_ms"]].c_str(), nullptr), 0.0) << line;
-        EXPECT_GT(std::strtod(fields[column["memory_bytes"]].c_str(), nullptr), 0.0) << line;
-        if (fields[column["pareto"]] == "1") frontierSeries.insert(fields[column["series"]]);
-    }
+    const BenchTable table = readBenchCsv(dir + "/out/bench.csv");
+    ASSERT_FALSE(table.header.empty()) << "no bench.csv";
+    expectCompleteAndFinite(table);
+    EXPECT_EQ(table.distinct("scene"), std::set<std::string>{"cornell_box"});
+    const std::set<std::string> modes = table.distinct("mode");
+    const std::set<std::string> frontierSeries = table.distinct("series", "pareto", "1");
+    const std::size_t rows = table.rows.size();
     // The smoke sweep has the direct baseline and two configurations per GI mode; a mode the
     // build cannot run is listed under "Not measured" in bench.md instead.
-    const std::string markdown = slurp(dir + "/out/bench.md");
+    const std::string markdown = readTextFile(dir + "/out/bench.md");
     EXPECT_TRUE(modes.count("direct")) << "no direct-light baseline row";
     EXPECT_TRUE(modes.count("voxel")) << "no voxel row";
     const bool atlasSkipped = markdown.find("atlas unavailable") != std::string::npos;
     EXPECT_TRUE(modes.count("atlas") || atlasSkipped) << "no atlas row and no reason: " << markdown;
-    EXPECT_GE(rows, 3);
+    EXPECT_GE(rows, 3u);
     // Direct light alone is the only configuration of its series: always on its frontier.
     EXPECT_TRUE(frontierSeries.count("direct"));
 
@@ -119,7 +54,8 @@ TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
     EXPECT_TRUE(fs::exists(dir + "/out/pareto.png") ||
                 r.err.find("plot skipped") != std::string::npos) << r.err;
     for (const auto& entry : fs::directory_iterator(dir + "/out")) {
-        EXPECT_NE(entry.path().extension(), ".tmp") << "temporary file left behind: " << entry.path();
+        EXPECT_NE(entry.path().extension(), ".tmp")
+                << "temporary file left behind: " << entry.path();
     }
     fs::remove_all(dir);
 }
