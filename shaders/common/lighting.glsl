@@ -29,9 +29,10 @@ vec3 lightIrradiance(GpuLight light, vec3 position, vec3 n) {
     float cosTheta = max(dot(n, toLight), 0.0);
     int type = int(light.positionAndType.w);
     if (type == LIGHT_DIRECTIONAL) return light.radiantIntensity.rgb * cosTheta;
-    // A surface point closer than 0.1 mm to the light would divide by ~0: those points are
-    // a singularity of the point-light model, not a physical answer.
-    float invSquare = 1.0 / max(distance * distance, 1e-8);
+    // A surface point (almost) at the light would divide by ~0: those points are a singularity
+    // of the point-light model, not a physical answer. The bound is relative to the scene
+    // (spotCone.z = (1e-4 x its diagonal)^2, GpuScene.cpp), so scaled scenes light alike.
+    float invSquare = 1.0 / max(distance * distance, light.spotCone.z);
     vec3 e = light.radiantIntensity.rgb * cosTheta * invSquare;
     if (type == LIGHT_SPOT) {
         float cosAlpha = dot(-toLight, light.directionAndRange.xyz);

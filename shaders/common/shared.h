@@ -85,6 +85,7 @@
 #define LOC_SHADOW_VIEW_PROJECTION  1   // mat4, world -> clip of the shadow view being drawn
 #define LOC_SHADOW_LIGHT_POSITION   2   // vec4, xyz = point light position, w = far distance
                                         // (0 for spot/directional: hardware depth is used)
+#define LOC_PRESENT_SCALE           3   // float, radiance multiplier undoing the pre-exposure
 
 #define LIGHT_POINT                 0
 #define LIGHT_SPOT                  1
@@ -125,7 +126,8 @@ struct GpuLight {                       // std430
     vec4 directionAndRange;             // xyz = unit direction light travels, w = range (0 = inf)
     vec4 radiantIntensity;              // rgb = colour x intensity (W/sr, or W/m^2 for
                                         // directional), w = unused
-    vec4 spotCone;                      // x = cos(inner), y = cos(outer), zw = unused
+    vec4 spotCone;                      // x = cos(inner), y = cos(outer), z = smallest
+                                        // squared distance 1/r^2 uses (m^2), w = unused
 };
 
 struct GpuMaterial {                    // std430

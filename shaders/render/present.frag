@@ -4,6 +4,8 @@
 #include "../common/shared.h"
 
 layout(binding = BIND_TEX_PRESENT_SOURCE) uniform sampler2D source;
+// 1 / the scene's pre-exposure (scene/Exposure.h) for radiance, 1 for debug views.
+layout(location = LOC_PRESENT_SCALE) uniform float scale = 1.0;
 
 in vec2 uv;
 layout(location = 0) out vec4 outColor;
@@ -14,5 +16,5 @@ vec3 linearToSrgb(vec3 linear) {
 }
 
 void main() {
-    outColor = vec4(linearToSrgb(texture(source, uv).rgb), 1.0);
+    outColor = vec4(linearToSrgb(texture(source, uv).rgb * scale), 1.0);
 }

@@ -253,6 +253,10 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
             }
         } else if (arg == "--light") {
             if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
+            if (*v == "none") {
+                config.noLights = true;
+                continue;
+            }
             scene::Light light;
             if (!parseLightSpec(*v, light, error)) return std::nullopt;
             config.extraLights.push_back(light);
@@ -330,6 +334,7 @@ std::string usage(Command command) {
                "--light point:x,y,z:r,g,b:intensity\n"
                "        spot:x,y,z:dx,dy,dz:r,g,b:intensity[:inner_deg,outer_deg]\n"
                "        dir:dx,dy,dz:r,g,b:intensity\n"
+               "        none   (no lights from the scene and no default light)\n"
                "\n"
                "--set keys (default, range):\n" + settingsHelp();
     case Command::Info:

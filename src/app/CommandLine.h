@@ -41,6 +41,7 @@ struct Config {
     int cameraIndex = 0;
     std::optional<CameraSpec> cameraSpec;
     std::vector<scene::Light> extraLights;   // --light
+    bool noLights = false;                   // --light none: no lights at all, not even the default
     platform::HeadlessProvider gl = platform::HeadlessProvider::Egl;
     bool glExplicit = false;                 // --gl given: no silent fallback
     Settings settings;

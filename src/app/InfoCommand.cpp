@@ -49,6 +49,11 @@ int runInfo(const Config& config) {
                 scene.bounds.min.x, scene.bounds.min.y, scene.bounds.min.z, scene.bounds.max.x,
                 scene.bounds.max.y, scene.bounds.max.z, size.x, size.y, size.z);
     }
+    if (scene.origin != glm::vec3(0.0f)) {
+        std::printf("origin     (%.9g, %.9g, %.9g): far from the file's origin, so positions here\n"
+                    "           are relative to this point (float precision, scene/Recentre.h)\n",
+                scene.origin.x, scene.origin.y, scene.origin.z);
+    }
     std::printf("lights     %zu\n", scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& l = scene.lights[i];

@@ -3,6 +3,7 @@
 #include "app/SceneSetup.h"
 #include "app/TimingsReport.h"
 #include "gl/GpuProfiler.h"
+#include "gl/Limits.h"
 #include "gl/ShaderLibrary.h"
 #include "platform/GlContext.h"
 #include "render/FrameRenderer.h"
@@ -83,6 +84,9 @@ int runRender(const Config& config) {
     render::CameraView camera;
     if (!selectCamera(config, scene, float(width) / float(height), camera, error)) return fail(2, error);
     if (config.mode == render::GiMode::Reference) return runReference(config, scene, camera, width, height);
+    if (!render::FrameRenderer::shadowMapsFit(scene.lights, config.settings.shadow, error)) {
+        return fail(2, error);
+    }
 
     std::string notice;
     auto context = platform::createHeadlessContext(config.gl, !config.glExplicit, error, notice);
@@ -106,7 +110,9 @@ int runRender(const Config& config) {
     }
     profiler.flush();
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
-        return fail(1, "OpenGL error 0x" + std::to_string(glError) + " while rendering");
+        return fail(1, gl::glErrorName(glError) + " while rendering" +
+                (glError == GL_OUT_OF_MEMORY ? ": the driver ran out of memory (lower the "
+                                               "resolutions with --set)" : ""));
     }
 
     const render::Image image = renderer.readback();

@@ -1,6 +1,7 @@
 #include "app/SceneSetup.h"
 
 #include "scene/GltfLoader.h"
+#include "scene/Recentre.h"
 #include "scene/SceneDefaults.h"
 
 #include <cstdio>
@@ -11,17 +12,33 @@ bool loadScene(const Config& config, scene::Scene& scene, std::string& error) {
     std::vector<std::string> warnings;
     if (!scene::loadGltf(config.scenePath, scene, error, warnings)) return false;
     for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    scene.origin = scene::recentreFarScene(scene);
+    if (scene.origin != glm::vec3(0.0f)) {
+        std::fprintf(stderr, "note: %s lies far from the origin; it is rendered moved by "
+                "(%g, %g, %g) m to keep float precision\n", config.scenePath.c_str(),
+                -scene.origin.x, -scene.origin.y, -scene.origin.z);
+    }
     // --light adds to the scene's lights, so the default light is only for scenes that have
-    // none at all, counting the command line's.
-    for (const scene::Light& light : config.extraLights) scene.lights.push_back(light);
+    // none at all, counting the command line's. --light none drops the scene's lights and the
+    // default one, keeping only the command line's (a dark scene is a legitimate test case).
+    if (config.noLights) scene.lights.clear();
+    // Command-line positions are in the file's coordinates.
+    for (scene::Light light : config.extraLights) {
+        light.position -= scene.origin;
+        scene.lights.push_back(light);
+    }
     scene::addDefaults(scene);
+    if (config.noLights) {
+        std::erase_if(scene.lights, [](const scene::Light& light) { return light.isDefault; });
+    }
     return true;
 }
 
 bool selectCamera(const Config& config, const scene::Scene& scene, float aspect,
         render::CameraView& camera, std::string& error) {
     if (config.cameraSpec) {
-        camera = render::cameraLookAt(config.cameraSpec->eye, config.cameraSpec->target,
+        camera = render::cameraLookAt(config.cameraSpec->eye - scene.origin,
+                config.cameraSpec->target - scene.origin,
                 glm::radians(config.cameraSpec->yfovDegrees), aspect, scene.bounds);
         return true;
     }

@@ -6,6 +6,7 @@
 #include "app/Ui.h"
 #include "gi/voxel/VoxelizationManager.h"
 #include "gl/GpuProfiler.h"
+#include "gl/Limits.h"
 #include "gl/ShaderLibrary.h"
 #include "platform/GlfwWindow.h"
 #include "render/FrameRenderer.h"
@@ -427,7 +428,7 @@ int Viewer::run() {
             continue;
         }
         mRenderer.render(mCamera.view(float(size.x) / float(size.y)), size, mOutput, mProfiler);
-        mPresent.execute({mRenderer.radiance()}, {size}, mProfiler);
+        mPresent.execute({mRenderer.radiance(), mRenderer.radianceScale()}, {size}, mProfiler);
         rendered = true;
         // Screenshots are taken before the overlay is drawn (view.screenshot_ui aside).
         if (mScreenshotRequested) {
@@ -463,9 +464,7 @@ int Viewer::run() {
         if (!writeScreenshot(mRenderer.readback(), mConfig.screenshotPath)) return 1;
     }
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
-        char code[16];
-        std::snprintf(code, sizeof code, "0x%04x", glError);
-        return fail(1, std::string("OpenGL error ") + code + " during the session");
+        return fail(1, gl::glErrorName(glError) + " during the session");
     }
     return 0;
 }

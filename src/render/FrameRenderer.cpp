@@ -2,6 +2,7 @@
 
 #include "gi/atlas/AtlasGi.h"
 #include "gi/voxel/VoxelizationManager.h"
+#include "gl/Limits.h"
 #include "gl/Shared.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -65,6 +66,11 @@ bool isDebugView(OutputComponent output) {
            output != OutputComponent::Indirect;
 }
 
+bool isRadiometric(OutputComponent output) {
+    return !isDebugView(output) || output == OutputComponent::VoxelIrradiance ||
+           output == OutputComponent::AtlasDirect || output == OutputComponent::AtlasIndirect;
+}
+
 bool outputAvailable(OutputComponent output, GiMode mode) {
     const std::string_view name = outputComponentName(output);
     if (name.rfind("voxel-", 0) == 0) return mode == GiMode::Voxel;
@@ -82,11 +88,19 @@ const char* giModeName(GiMode mode) {
     return "?";
 }
 
+bool FrameRenderer::shadowMapsFit(const std::vector<scene::Light>& lights,
+        const ShadowSettings& settings, std::string& error) {
+    return gl::fitsResourceBudget(std::to_string(lights.size()) + " light(s) at shadow.resolution " +
+                    std::to_string(settings.resolution) + " (shadow maps)",
+            ShadowPass::memoryFor(lights, settings), error);
+}
+
 bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
         gl::ShaderLibrary& shaders, std::string& error) {
     mSettings = settings;
     mShaders = &shaders;
     mSceneDescription = &scene;
+    if (!shadowMapsFit(scene.lights, settings.shadow, error)) return false;
     mScene = std::make_unique<scene::GpuScene>(scene);
     mFrameUniforms = gl::createBuffer(sizeof(shader::FrameUniforms), nullptr,
             GL_DYNAMIC_STORAGE_BIT, "frame/uniforms");
@@ -98,6 +112,7 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
 
 bool FrameRenderer::setSettings(const Settings& settings, std::string& error) {
     const bool shadowsChanged = !(settings.shadow == mSettings.shadow);
+    if (shadowsChanged && !shadowMapsFit(mLights, settings.shadow, error)) return false;
     if (mGi && !mGi->configure(settings, error)) return false;
     mSettings = settings;
     if (shadowsChanged) mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
@@ -168,6 +183,7 @@ void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
         OutputComponent output, gl::GpuProfiler& profiler) {
     profiler.newFrame();
     resizeTargets(outputSize * mSettings.supersample);
+    mLastOutput = output;
 
     shader::FrameUniforms frame{};
     frame.viewProjection = camera.viewProjection();
@@ -215,16 +231,21 @@ void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
             {mFramebuffer, mRenderSize}, profiler);
 }
 
+float FrameRenderer::radianceScale() const {
+    return isRadiometric(mLastOutput) ? 1.0f / mScene->exposure() : 1.0f;
+}
+
 Image FrameRenderer::readback() const {
     Image full(mRenderSize.x, mRenderSize.y);
     std::vector<float> rgba(std::size_t(mRenderSize.x) * std::size_t(mRenderSize.y) * 4);
     glGetTextureImage(mColor.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)),
             rgba.data());
     // GL rows run bottom to top; images run top to bottom.
+    const float scale = radianceScale();
     for (int y = 0; y < mRenderSize.y; ++y) {
         const float* row = rgba.data() + std::size_t(mRenderSize.y - 1 - y) * std::size_t(mRenderSize.x) * 4;
         for (int x = 0; x < mRenderSize.x; ++x) {
-            full.set(x, y, {row[x * 4], row[x * 4 + 1], row[x * 4 + 2]});
+            full.set(x, y, glm::vec3(row[x * 4], row[x * 4 + 1], row[x * 4 + 2]) * scale);
         }
     }
     return boxDownsample(full, mSettings.supersample);

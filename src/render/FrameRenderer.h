@@ -36,6 +36,9 @@ enum class OutputComponent {
 [[nodiscard]] const std::vector<OutputComponent>& allOutputComponents();
 // True for a technique's debug view (not a radiance component).
 [[nodiscard]] bool isDebugView(OutputComponent output);
+// True for outputs in W/m^2 or W/(m^2 sr) (the components, irradiance and direct-light views),
+// which carry the scene's pre-exposure on the GPU; false for albedo, normals, positions, charts.
+[[nodiscard]] bool isRadiometric(OutputComponent output);
 // False for a technique's debug view while another mode is active.
 [[nodiscard]] bool outputAvailable(OutputComponent output, GiMode mode);
 
@@ -44,6 +47,12 @@ public:
     // Uploads the scene and builds every program; false with one message on failure.
     bool init(const scene::Scene& scene, const Settings& settings, gl::ShaderLibrary& shaders,
             std::string& error);
+
+    // False with a message when the lights' shadow maps at `settings` would exceed the resource
+    // budget (gl/Limits.h): 64 point lights at shadow.resolution 1024 take 1.5 GiB. init() and
+    // setSettings() check it too; callers check first to tell bad input from a failure.
+    [[nodiscard]] static bool shadowMapsFit(const std::vector<scene::Light>& lights,
+            const ShadowSettings& settings, std::string& error);
 
     // Applies settings; false with a message if the active technique cannot honour them.
     bool setSettings(const Settings& settings, std::string& error);
@@ -56,11 +65,15 @@ public:
     void render(const CameraView& camera, glm::ivec2 outputSize, OutputComponent output,
             gl::GpuProfiler& profiler);
 
-    // The last frame as linear radiance, box-averaged down to the output size.
+    // The last frame as linear radiance, box-averaged down to the output size, with the
+    // pre-exposure (scene/Exposure.h) divided out.
     [[nodiscard]] Image readback() const;
 
-    // RGBA32F linear radiance of the last frame (alpha = geometry coverage), render size.
+    // RGBA32F linear radiance of the last frame times radianceScale()^-1 (alpha = geometry
+    // coverage), render size: multiply by radianceScale() for W/(m^2 sr).
     const gl::Texture& radiance() const { return mColor; }
+    // 1 / pre-exposure for radiometric outputs, 1 for the other debug views.
+    float radianceScale() const;
     glm::ivec2 renderSize() const { return mRenderSize; }
     const scene::GpuScene& gpuScene() const { return *mScene; }
 
@@ -77,6 +90,7 @@ private:
     std::vector<scene::Light> mLights;
     gl::Buffer mFrameUniforms;
     gl::Texture mColor, mDepth;
+    OutputComponent mLastOutput = OutputComponent::Final;
     gl::Framebuffer mFramebuffer;
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;

@@ -32,6 +32,7 @@ void PresentPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
     glUseProgram(mProgram.id());
+    glProgramUniform1f(mProgram.id(), LOC_PRESENT_SCALE, in.scale);
     glBindTextureUnit(BIND_TEX_PRESENT_SOURCE, in.radiance.id());
     glBindSampler(BIND_TEX_PRESENT_SOURCE, mBilinear.id());
     glBindVertexArray(mEmpty.id());

@@ -2,7 +2,7 @@
 // the whole default framebuffer with one full-screen triangle, exposure 1, clamped and
 // sRGB-encoded in the shader (the same mapping as PNG outputs, DESIGN.md), sampled bilinearly
 // when the render size differs from the window's (render.supersample > 1).
-// Inputs : radiance, RGBA32F linear radiance W/(m^2 sr), any size.
+// Inputs : radiance, RGBA32F linear radiance W/(m^2 sr) divided by `scale`, any size.
 // Outputs: the default framebuffer (0), RGBA8 sRGB-encoded values, alpha 1.
 #pragma once
 
@@ -20,7 +20,8 @@ namespace gi::render {
 class PresentPass {
 public:
     struct Inputs {
-        const gl::Texture& radiance;    // RGBA32F, linear radiance
+        const gl::Texture& radiance;    // RGBA32F, linear radiance / scale
+        float scale = 1.0f;             // FrameRenderer::radianceScale()
     };
     struct Outputs {
         glm::ivec2 framebufferSize;     // pixels of the default framebuffer

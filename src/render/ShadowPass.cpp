@@ -171,12 +171,26 @@ void ShadowPass::bind() const {
 }
 
 std::vector<gl::MemoryItem> ShadowPass::memory() const {
-    const int res2D = mLayers2D > 0 ? mResolution : 1;
-    const int resCube = mLayersCube > 0 ? mResolution : 1;
+    return memoryFor(mLayers2D, mLayersCube, mResolution);
+}
+
+std::vector<gl::MemoryItem> ShadowPass::memoryFor(int layers2D, int layersCube, int resolution) {
+    const int res2D = layers2D > 0 ? resolution : 1;
+    const int resCube = layersCube > 0 ? resolution : 1;
     return {{"render/shadow/maps_2d",
-                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {res2D, res2D, std::max(mLayers2D, 1)}, 1)},
+                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {res2D, res2D, std::max(layers2D, 1)}, 1)},
             {"render/shadow/maps_cube",
-                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {resCube, resCube, 6 * std::max(mLayersCube, 1)}, 1)}};
+                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {resCube, resCube, 6 * std::max(layersCube, 1)}, 1)}};
+}
+
+std::vector<gl::MemoryItem> ShadowPass::memoryFor(const std::vector<scene::Light>& lights,
+        const ShadowSettings& settings) {
+    int layers2D = 0, layersCube = 0;
+    for (const scene::Light& light : lights) {
+        if (!settings.enabled) break;
+        (light.type == scene::LightType::Point ? layersCube : layers2D) += 1;
+    }
+    return memoryFor(layers2D, layersCube, settings.resolution);
 }
 
 } // namespace gi::render

@@ -39,6 +39,9 @@ public:
     void invalidate() { mDirty = true; }
 
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+    // What setLights(lights, ..., settings) would allocate, before allocating it.
+    [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(const std::vector<scene::Light>& lights,
+            const ShadowSettings& settings);
 
     struct View {
         glm::mat4 viewProjection;
@@ -50,6 +53,8 @@ public:
     const std::vector<View>& views() const { return mViews; }
 
 private:
+    static std::vector<gl::MemoryItem> memoryFor(int layers2D, int layersCube, int resolution);
+
     gl::ProgramRef mProgram;
     gl::Texture mMaps2D, mMapsCube;
     gl::Buffer mShadowTable;

@@ -1,6 +1,7 @@
 #include "scene/GpuScene.h"
 
 #include "gl/Shared.h"
+#include "scene/Exposure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -117,11 +118,30 @@ void GpuScene::uploadMaterials(const Scene& scene) {
     table.push_back(fallback);
     mBaseColorTexture.push_back(-1);
     mEmissiveTexture.push_back(-1);
-    mMaterials = gl::createBuffer(table.size() * sizeof(shader::GpuMaterial), table.data(), 0,
-            "scene/materials");
+    mMaterialTable = std::move(table);
+    for (const shader::GpuMaterial& m : mMaterialTable) {
+        mMaxEmission = std::max({mMaxEmission, m.emissiveAndCutoff.r, m.emissiveAndCutoff.g,
+                m.emissiveAndCutoff.b});
+    }
 }
 
 void GpuScene::setLights(const std::vector<Light>& lights) {
+    const float exposure = preExposure(lights, mBounds, mMaxEmission);
+    if (!mMaterials || exposure != mExposure) {
+        std::vector<shader::GpuMaterial> exposed = mMaterialTable;
+        for (shader::GpuMaterial& m : exposed) {
+            m.emissiveAndCutoff = glm::vec4(glm::vec3(m.emissiveAndCutoff) * exposure,
+                    m.emissiveAndCutoff.w);
+        }
+        mMaterials = gl::createBuffer(exposed.size() * sizeof(shader::GpuMaterial), exposed.data(),
+                0, "scene/materials");
+    }
+    mExposure = exposure;
+    // 1/r^2 is cut off within 1e-4 of the scene's size of a light (lighting.glsl): 0.1 mm in a
+    // 1 m box, and the same fraction of a 1 mm or a 10 km one.
+    const glm::vec3 size = mBounds.empty() ? glm::vec3(1.0f) : mBounds.max - mBounds.min;
+    const float minDistance = 1e-4f * std::max(glm::length(size), 1e-12f);
+    const float minDistanceSquared = std::max(minDistance * minDistance, 1e-36f);
     std::vector<shader::GpuLight> table;
     for (const Light& light : lights) {
         shader::GpuLight g{};
@@ -130,8 +150,9 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
                                                                 : LIGHT_DIRECTIONAL;
         g.positionAndType = glm::vec4(light.position, float(type));
         g.directionAndRange = glm::vec4(glm::normalize(light.direction), light.range);
-        g.radiantIntensity = glm::vec4(light.color * light.intensity, 0.0f);
-        g.spotCone = glm::vec4(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle), 0.0f, 0.0f);
+        g.radiantIntensity = glm::vec4(light.color * light.intensity * exposure, 0.0f);
+        g.spotCone = glm::vec4(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle),
+                minDistanceSquared, 0.0f);
         table.push_back(g);
     }
     mLightCount = int(table.size());

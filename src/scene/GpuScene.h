@@ -7,6 +7,7 @@
 
 #include "gl/Handle.h"
 #include "gl/Objects.h"
+#include "gl/Shared.h"
 #include "scene/Scene.h"
 
 #include <vector>
@@ -33,8 +34,13 @@ public:
 
     explicit GpuScene(const Scene& scene);
 
-    // Replaces the light table (lights may come from the scene and the command line).
+    // Replaces the light table (lights may come from the scene and the command line) and
+    // chooses the pre-exposure for it (scene/Exposure.h): lights and emission are uploaded
+    // times exposure(), so everything the GPU computes from them is too.
     void setLights(const std::vector<Light>& lights);
+
+    // The factor k of scene/Exposure.h that every GPU radiometric value carries.
+    float exposure() const { return mExposure; }
 
     // Issues every draw with the current program; binds base-colour and emissive textures
     // and sets LOC_DRAW_MATERIAL per draw. `cullBackFaces` culls single-sided draws only.
@@ -62,6 +68,10 @@ private:
     std::size_t mVertexBytes = 0, mIndexBytes = 0, mTextureBytes = 0;
     int mLightCount = 0;
     Aabb mBounds;
+    // The material table as authored; uploaded with its emission times mExposure.
+    std::vector<shader::GpuMaterial> mMaterialTable;
+    float mMaxEmission = 0.0f;
+    float mExposure = 1.0f;
 };
 
 } // namespace gi::scene

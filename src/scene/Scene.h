@@ -118,6 +118,8 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<Camera> cameras;
     Aabb bounds;                         // world-space bounds of all instances
+    glm::vec3 origin{0.0f};              // the file's point at world (0,0,0): non-zero when
+                                         // a far-away scene was recentred (scene/Recentre.h)
 
     std::size_t triangleCount() const;   // over all instances
     std::size_t vertexCount() const;     // over all instances

@@ -1,6 +1,7 @@
 #include "gi/atlas/AtlasGi.h"
 
 #include "gi/atlas/Hammersley.h"
+#include "gl/Limits.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -48,6 +49,12 @@ bool AtlasGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::s
 }
 
 bool AtlasGi::buildAtlasGeometry(std::string& error) {
+    if (mMesh.triangleCount() == 0) {
+        // Nothing to light and nothing to bounce from: the frame is direct light (if any).
+        mAtlas = Atlas{};
+        std::fprintf(stderr, "atlas: the scene has no triangles; atlas GI adds nothing\n");
+        return true;
+    }
     AtlasOptions options;
     options.resolution = mSettings.resolution;
     options.gutter = mSettings.gutter;
@@ -81,6 +88,10 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     if (s.resolution > largest) {
         error = "atlas.resolution " + std::to_string(s.resolution) +
                 " exceeds the largest texture / viewport " + std::to_string(largest);
+        return false;
+    }
+    if (!gl::fitsResourceBudget("atlas.resolution " + std::to_string(s.resolution) +
+                    " (atlas layers)", AtlasTextures::memoryFor(s.resolution), error)) {
         return false;
     }
     if (s.samples > maxTexture) {
@@ -136,6 +147,7 @@ bool AtlasGi::inputsChanged(const GiFrameInputs& in) {
 }
 
 void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    if (mMesh.triangleCount() == 0) return;
     if (inputsChanged(in) || !mSettings.progressive) mGBufferValid = false;
     const OccupancyVolume* occupancy =
             mSettings.visibility == ATLAS_VISIBILITY_VOXEL ? in.occupancy : nullptr;
@@ -193,6 +205,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
 
 GiOutputs AtlasGi::outputs() const {
     GiOutputs out;
+    if (mMesh.triangleCount() == 0) return out;
     out.indirect = &mResolve.indirect();
     out.size = mResolve.size();
     out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;

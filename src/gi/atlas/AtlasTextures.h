@@ -21,6 +21,8 @@ struct AtlasTextures {
 
     void allocate(int resolution);
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+    // What allocate(resolution) would take, before taking it.
+    [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int resolution);
 };
 
 } // namespace gi::atlas

@@ -1,5 +1,7 @@
 #include "gi/voxel/VoxelizationManager.h"
 
+#include "gl/Limits.h"
+
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -49,11 +51,9 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
     // 32 bytes per voxel (VoxelTextures.h); refuse before allocating rather than let the
     // driver fail (or swap) halfway through a frame.
     const double bytes = 32.0 * std::pow(double(s.resolution), 3.0) * double(s.levels);
-    constexpr double kBudget = 2.0 * 1024.0 * 1024.0 * 1024.0;
-    if (bytes > kBudget) {
-        error = "voxel.resolution " + std::to_string(s.resolution) + " with voxel.cascades " +
-                std::to_string(s.levels) + " needs " + std::to_string(int(bytes / (1024.0 * 1024.0))) +
-                " MiB of voxel textures, over the 2048 MiB budget";
+    if (!gl::fitsResourceBudget("voxel.resolution " + std::to_string(s.resolution) +
+                    " with voxel.cascades " + std::to_string(s.levels) + " (voxel textures)",
+                bytes, error)) {
         return false;
     }
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
