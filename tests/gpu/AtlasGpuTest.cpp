@@ -69,8 +69,13 @@ public:
     const atlas::AtlasGi& gi() const {
         return static_cast<const atlas::AtlasGi&>(*mRenderer.technique());
     }
+    // The lit layer in W/(m^2 sr): the atlas holds it times the scene's pre-exposure
+    // (scene/Exposure.h).
     std::vector<glm::vec4> lit() const {
-        return readAtlas(gi().textures().lit, gi().textures().resolution);
+        std::vector<glm::vec4> texels = readAtlas(gi().textures().lit, gi().textures().resolution);
+        const float exposure = mRenderer.gpuScene().exposure();
+        for (glm::vec4& t : texels) t = glm::vec4(glm::vec3(t) / exposure, t.a);
+        return texels;
     }
     render::Image image() const { return mRenderer.readback(); }
     render::FrameRenderer& renderer() { return mRenderer; }
@@ -312,8 +317,9 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
         GiFrameInputs inputs{gpuScene, scene.lights, shadows, frameUniforms, camera, size};
         inputs.occupancy = &occupancy;
         gi.update(inputs, profiler);
-        const glm::dvec3 e = floorCentreIrradiance(
-                gi.atlas(), mesh, readAtlas(gi.textures().lit, gi.textures().resolution));
+        const glm::dvec3 e = floorCentreIrradiance(gi.atlas(), mesh,
+                                     readAtlas(gi.textures().lit, gi.textures().resolution)) /
+                             double(gpuScene.exposure());
         const double expected = kEmitterFormFactor * 2.0;
         if (visibility == ATLAS_VISIBILITY_NONE) {
             // 256 points, about a third on the emitter: 3%.
