@@ -8,6 +8,9 @@ Variants (see README.md beside this script for the source of every number):
                      glTF units and axes, lit by one KHR_lights_punctual point
                      light under the ceiling.  Default output:
                      cornell_box.gltf beside this script.
+  animated           The Cornell box with a blue cube sliding and turning along the
+                     front of the floor (glTF animations, 4 s loop): the demo of
+                     dynamic GI.  Default output: cornell_box_animated.gltf.
   plane              A 2 m x 2 m grey floor under a point light, for the
                      analytic radiance test.  Default output:
                      ../analytic/plane_point_light.gltf relative to this script.
@@ -217,12 +220,10 @@ class GltfWriter:
         # that float (4) and uint16 (2) accessors need.
         while len(self.blob) % 4:
             self.blob.append(0)
-        self.doc["bufferViews"].append({
-            "buffer": 0,
-            "byteOffset": len(self.blob),
-            "byteLength": len(data),
-            "target": target,
-        })
+        view = {"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data)}
+        if target is not None:  # animation data is neither vertices nor indices
+            view["target"] = target
+        self.doc["bufferViews"].append(view)
         self.blob.extend(data)
         return len(self.doc["bufferViews"]) - 1
 
@@ -288,6 +289,21 @@ class GltfWriter:
             node["rotation"] = list(rotation)
         node["translation"] = list(position)
         return self._node(node)
+
+    def add_animation(self, name, node, path, times, values, interpolation="LINEAR"):
+        """One channel moving `node`'s `path` through `values` (tuples) at `times` (s)."""
+        t_view = self._view(struct.pack("<%df" % len(times), *times), None)
+        t_acc = self._accessor(t_view, FLOAT, len(times), "SCALAR",
+                               {"min": [min(times)], "max": [max(times)]})
+        width = len(values[0])
+        flat = [c for v in values for c in v]
+        v_view = self._view(struct.pack("<%df" % len(flat), *flat), None)
+        v_acc = self._accessor(v_view, FLOAT, len(values), "VEC%d" % width)
+        self.doc.setdefault("animations", []).append({
+            "name": name,
+            "samplers": [{"input": t_acc, "output": v_acc, "interpolation": interpolation}],
+            "channels": [{"sampler": 0, "target": {"node": node, "path": path}}],
+        })
 
     def _node(self, node):
         self.doc["nodes"].append(node)
@@ -382,8 +398,43 @@ def build_plane():
     return w, "plane_point_light"
 
 
+# The animated demo: a blue cube slides along the front of the floor, from beside the red
+# wall (x = 0 in glTF) to beside the green one and back, turning as it goes, so its bounce light (blue on the
+# floor, red or green on its sides) moves with it. Only the cube is dynamic.
+ANIMATED_CUBE_HALF = 0.04
+ANIMATED_CUBE_ALBEDO = (0.1, 0.2, 0.8)
+ANIMATED_CUBE_PATH = ((0.10, 0.04, -0.05), (0.50, 0.04, -0.05))  # ends of the slide (m)
+ANIMATED_PERIOD_S = 4.0
+
+
+def build_animated():
+    w, _ = build_cornell()
+    w.add_material("blue", ANIMATED_CUBE_ALBEDO)
+    h = ANIMATED_CUBE_HALF
+    m = MeshBuilder()
+    corners = [(x, y, z) for x in (-h, h) for y in (-h, h) for z in (-h, h)]
+    for axis in range(3):
+        for side in (-h, h):
+            face = [c for c in corners if c[axis] == side]
+            # Order the four corners around the face before add_quad orients them.
+            u, v = [i for i in range(3) if i != axis]
+            face.sort(key=lambda c: math.atan2(c[v], c[u]))
+            facing = tuple(side if i == axis else 0.0 for i in range(3))
+            m.add_quad(face, facing)
+    cube = w.add_mesh_node("animated_cube", m, "blue")
+    start, end = ANIMATED_CUBE_PATH
+    w.doc["nodes"][cube]["translation"] = list(start)
+    half = ANIMATED_PERIOD_S / 2.0
+    w.add_animation("slide", cube, "translation", [0.0, half, ANIMATED_PERIOD_S], [start, end, start])
+    turn = math.radians(90.0) / 2.0
+    w.add_animation("turn", cube, "rotation", [0.0, half, ANIMATED_PERIOD_S],
+                    [(0.0, 0.0, 0.0, 1.0), (0.0, math.sin(turn), 0.0, math.cos(turn)), (0.0, 0.0, 0.0, 1.0)])
+    return w, "cornell_box_animated"
+
+
 VARIANTS = {
     "cornell": (build_cornell, ("cornell_box.gltf",)),
+    "animated": (build_animated, ("cornell_box_animated.gltf",)),
     "plane": (build_plane, ("..", "analytic", "plane_point_light.gltf")),
 }
 

@@ -274,6 +274,13 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
                 return std::nullopt;
             }
             if (!applySetting(config.settings, *v, error)) return std::nullopt;
+        } else if (arg == "--time") {
+            if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
+            if (!parseFloat(*v, config.animationTime) || config.animationTime < 0.0f ||
+                    config.animationTime > 1e6f) {
+                error = "--time '" + *v + "': expected seconds between 0 and 1e6";
+                return std::nullopt;
+            }
         } else if (arg == "--frames") {
             if (!allowed(arg, {Command::View}) || !(v = value(arg))) return std::nullopt;
             if (!parseInt(*v, config.frames) || config.frames < 1) {
@@ -326,6 +333,7 @@ std::string usage(Command command) {
                "        [--output final|direct|indirect|voxel-albedo|voxel-irradiance|voxel-normal]\n"
                "        [--width W --height H] [--camera N | --camera ex,ey,ez,tx,ty,tz,fovy_deg]\n"
                "        [--light KIND:...] [--gl egl|osmesa] [--set key=value ...] [--timings F.json]\n"
+               "        [--time SECONDS]   (pose of the scene's glTF animations; default 0)\n"
                "\n"
                "Renders one frame without a display (EGL surfaceless; OSMesa if EGL is missing\n"
                "and --gl was not given) to an sRGB PNG and optionally a linear HDR image.\n"

@@ -47,6 +47,7 @@ struct Config {
     Settings settings;
     // view
     int frames = 0;                          // 0 = interactive
+    float animationTime = 0.0f;              // --time: seconds into the scene's animations
     std::string screenshotPath;
     std::vector<KeyEvent> keys;
     // bench

@@ -1,6 +1,7 @@
 #include "app/InfoCommand.h"
 
 #include "app/SceneSetup.h"
+#include "scene/Animation.h"
 #include "scene/GpuScene.h"
 
 #include <glm/gtc/constants.hpp>
@@ -53,6 +54,14 @@ int runInfo(const Config& config) {
         std::printf("origin     (%.9g, %.9g, %.9g): far from the file's origin, so positions here\n"
                     "           are relative to this point (float precision, scene/Recentre.h)\n",
                 scene.origin.x, scene.origin.y, scene.origin.z);
+    }
+    if (!scene.animations.empty()) {
+        std::size_t dynamic = 0;
+        for (const scene::Instance& instance : scene.instances) dynamic += instance.dynamic ? 1 : 0;
+        std::printf("animations %zu, %.3g s loop; %zu of %zu instances dynamic (bounds cover "
+                    "every pose)\n",
+                scene.animations.size(), double(scene::animationDuration(scene)), dynamic,
+                scene.instances.size());
     }
     std::printf("lights     %zu\n", scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {

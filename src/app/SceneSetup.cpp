@@ -1,5 +1,6 @@
 #include "app/SceneSetup.h"
 
+#include "scene/Animation.h"
 #include "scene/GltfLoader.h"
 #include "scene/Recentre.h"
 #include "scene/SceneDefaults.h"
@@ -13,6 +14,7 @@ bool loadScene(const Config& config, scene::Scene& scene, std::string& error) {
     if (!scene::loadGltf(config.scenePath, scene, error, warnings)) return false;
     for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     scene.origin = scene::recentreFarScene(scene);
+    scene::poseScene(scene, config.animationTime);
     if (scene.origin != glm::vec3(0.0f)) {
         std::fprintf(stderr, "note: %s lies far from the origin; it is rendered moved by "
                 "(%g, %g, %g) m to keep float precision\n", config.scenePath.c_str(),

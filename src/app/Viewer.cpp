@@ -12,6 +12,7 @@
 #include "render/FrameRenderer.h"
 #include "render/ImageIO.h"
 #include "render/PresentPass.h"
+#include "scene/Animation.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -123,6 +124,8 @@ private:
     Settings mSettings;
     FlyCamera mCamera;
     int mCameraIndex = 0;                     // scene camera; -1 = the --camera spec
+    double mAnimationTime = 0.0;              // seconds of the scene's animations played
+    bool mAnimationPaused = false;
     render::GiMode mMode = render::GiMode::Direct;
     render::OutputComponent mOutput = render::OutputComponent::Final;
     std::vector<Hotkey> mHotkeys;
@@ -139,7 +142,8 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
         std::unique_ptr<platform::GlfwWindow> window, const render::CameraView& camera)
     : mConfig(config), mScene(std::move(scene)), mWindow(std::move(window)),
       mSettings(config.settings), mCamera(camera, mScene->bounds),
-      mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex) {
+      mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex),
+      mAnimationTime(config.animationTime) {
     mHotkeys.push_back({"H", "show / hide this help", [this] { mUi.toggleHelp(); }});
     for (const ModeKey& entry : kModeKeys) {
         mHotkeys.push_back({entry.key,
@@ -147,6 +151,12 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
                 [this, &entry] { selectMode(entry); }});
     }
     mHotkeys.push_back({"O", "output: final / direct / indirect / debug views", [this] { cycleOutput(); }});
+    if (scene::animationDuration(*mScene) > 0.0f) {
+        mHotkeys.push_back({"P", "pause / play the scene's animations", [this] {
+            mAnimationPaused = !mAnimationPaused;
+            notify(mAnimationPaused ? "animation paused" : "animation playing");
+        }});
+    }
     mHotkeys.push_back({"L", "cascade level shown by voxel debug views", [this] {
         changeSetting([](Settings& s) { s.voxel.debugLevel = (s.voxel.debugLevel + 1) % s.voxel.levels; },
                 "voxel.debug_level");
@@ -421,6 +431,12 @@ int Viewer::run() {
         const double seconds = std::chrono::duration<double>(now - previous).count();
         previous = now;
         mCamera.update(readInput(), std::min(float(seconds), kMaxStepSeconds));
+        if (!mAnimationPaused && mRenderer.gpuScene().hasDynamicGeometry()) {
+            // Scripted runs (--frames) advance by a fixed 1/30 s so screenshots repeat.
+            mAnimationTime += mConfig.frames > 0 ? 1.0 / 30.0 : std::min(seconds, 0.25);
+            scene::poseScene(*mScene, mAnimationTime);
+            mRenderer.setPose(*mScene);
+        }
 
         const glm::ivec2 size = mWindow->framebufferSize();
         if (size.x <= 0 || size.y <= 0) {

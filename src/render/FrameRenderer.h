@@ -60,6 +60,10 @@ public:
     bool setMode(GiMode mode, std::string& error);
     GiMode mode() const { return mMode; }
     void setLights(const std::vector<scene::Light>& lights);
+    // Uploads the current pose of `scene`'s animated instances (scene/Animation.h). Voxel GI
+    // revoxelizes every frame and so follows them; the atlas keeps the geometry it was built
+    // from (its charts and G-buffer are not rebuilt for moving objects).
+    void setPose(const scene::Scene& scene) { mScene->updateDynamic(scene); }
 
     // Renders one frame of `camera` at outputSize x render.supersample.
     void render(const CameraView& camera, glm::ivec2 outputSize, OutputComponent output,

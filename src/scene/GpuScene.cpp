@@ -20,33 +20,46 @@ GpuScene::GpuScene(const Scene& scene) : mBounds(scene.bounds) {
     setLights(scene.lights);
 }
 
+namespace {
+
+// The instance's vertices in world space, as the vertex buffer holds them.
+void appendInstanceVertices(const Scene& scene, const Instance& instance,
+        std::vector<SceneVertex>& vertices) {
+    const Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.worldFromLocal)));
+    for (std::size_t i = 0; i < primitive.positions.size(); ++i) {
+        SceneVertex v{};
+        const glm::vec3 p = glm::vec3(instance.worldFromLocal * glm::vec4(primitive.positions[i], 1.0f));
+        glm::vec3 n = normalMatrix * primitive.normals[i];
+        const float length = glm::length(n);
+        n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+        const glm::vec2 uv0 = i < primitive.texcoords0.size() ? primitive.texcoords0[i] : glm::vec2(0.0f);
+        const glm::vec2 uv1 = i < primitive.texcoords1.size() ? primitive.texcoords1[i] : glm::vec2(0.0f);
+        const glm::vec4 c = i < primitive.colors.size() ? primitive.colors[i] : glm::vec4(1.0f);
+        std::copy_n(&p.x, 3, v.position);
+        std::copy_n(&n.x, 3, v.normal);
+        std::copy_n(&uv0.x, 2, v.texcoord0);
+        std::copy_n(&uv1.x, 2, v.texcoord1);
+        std::copy_n(&c.x, 4, v.color);
+        vertices.push_back(v);
+    }
+}
+
+} // namespace
+
 void GpuScene::uploadGeometry(const Scene& scene) {
     std::vector<SceneVertex> vertices;
     std::vector<std::uint32_t> indices;
     vertices.reserve(scene.vertexCount());
     indices.reserve(scene.triangleCount() * 3);
     const int defaultMaterial = int(scene.materials.size());
-    for (const Instance& instance : scene.instances) {
+    for (std::size_t k = 0; k < scene.instances.size(); ++k) {
+        const Instance& instance = scene.instances[k];
         const Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.worldFromLocal)));
         const auto base = std::uint32_t(vertices.size());
-        for (std::size_t i = 0; i < primitive.positions.size(); ++i) {
-            SceneVertex v{};
-            const glm::vec3 p = glm::vec3(instance.worldFromLocal * glm::vec4(primitive.positions[i], 1.0f));
-            glm::vec3 n = normalMatrix * primitive.normals[i];
-            const float length = glm::length(n);
-            n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
-            const glm::vec2 uv0 = i < primitive.texcoords0.size() ? primitive.texcoords0[i] : glm::vec2(0.0f);
-            const glm::vec2 uv1 = i < primitive.texcoords1.size() ? primitive.texcoords1[i] : glm::vec2(0.0f);
-            const glm::vec4 c = i < primitive.colors.size() ? primitive.colors[i] : glm::vec4(1.0f);
-            std::copy_n(&p.x, 3, v.position);
-            std::copy_n(&n.x, 3, v.normal);
-            std::copy_n(&uv0.x, 2, v.texcoord0);
-            std::copy_n(&uv1.x, 2, v.texcoord1);
-            std::copy_n(&c.x, 4, v.color);
-            vertices.push_back(v);
-        }
-        Draw draw;
+        appendInstanceVertices(scene, instance, vertices);
+        if (instance.dynamic) mDynamicRanges.push_back({k, base, primitive.positions.size()});
+    Draw draw;
         draw.firstIndex = std::uint32_t(indices.size());
         draw.indexCount = std::uint32_t(primitive.indices.size());
         draw.material = primitive.material >= 0 ? primitive.material : defaultMaterial;
@@ -62,7 +75,9 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     }
     mVertexBytes = vertices.size() * sizeof(SceneVertex);
     mIndexBytes = indices.size() * sizeof(std::uint32_t);
-    mVertices = gl::createBuffer(mVertexBytes, vertices.data(), 0, "scene/vertices");
+    // Animated instances rewrite their vertices every frame (updateDynamic).
+    mVertices = gl::createBuffer(mVertexBytes, vertices.data(),
+            mDynamicRanges.empty() ? 0 : GL_DYNAMIC_STORAGE_BIT, "scene/vertices");
     mIndices = gl::createBuffer(mIndexBytes, indices.data(), 0, "scene/indices");
 
     mVertexArray = gl::createVertexArray("scene/vertex_array");
@@ -123,6 +138,18 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         mMaxEmission = std::max({mMaxEmission, m.emissiveAndCutoff.r, m.emissiveAndCutoff.g,
                 m.emissiveAndCutoff.b});
     }
+}
+
+void GpuScene::updateDynamic(const Scene& scene) {
+    if (mDynamicRanges.empty()) return;
+    std::vector<SceneVertex> vertices;
+    for (const DynamicRange& range : mDynamicRanges) {
+        vertices.clear();
+        appendInstanceVertices(scene, scene.instances[range.instance], vertices);
+        glNamedBufferSubData(mVertices.id(), GLintptr(range.firstVertex * sizeof(SceneVertex)),
+                GLsizeiptr(vertices.size() * sizeof(SceneVertex)), vertices.data());
+    }
+    ++mGeometryVersion;
 }
 
 void GpuScene::setLights(const std::vector<Light>& lights) {

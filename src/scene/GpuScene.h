@@ -39,6 +39,13 @@ public:
     // times exposure(), so everything the GPU computes from them is too.
     void setLights(const std::vector<Light>& lights);
 
+    // Rewrites the vertices of the scene's dynamic (animated) instances from their current
+    // worldFromLocal (scene/Animation.h poseScene) and bumps geometryVersion().
+    void updateDynamic(const Scene& scene);
+    bool hasDynamicGeometry() const { return !mDynamicRanges.empty(); }
+    // Changes whenever vertices move: passes that cache geometry (the atlas) compare it.
+    std::uint64_t geometryVersion() const { return mGeometryVersion; }
+
     // The factor k of scene/Exposure.h that every GPU radiometric value carries.
     float exposure() const { return mExposure; }
 
@@ -72,6 +79,12 @@ private:
     std::vector<shader::GpuMaterial> mMaterialTable;
     float mMaxEmission = 0.0f;
     float mExposure = 1.0f;
+    struct DynamicRange {
+        std::size_t instance = 0;        // into Scene::instances
+        std::size_t firstVertex = 0, vertexCount = 0;
+    };
+    std::vector<DynamicRange> mDynamicRanges;
+    std::uint64_t mGeometryVersion = 0;
 };
 
 } // namespace gi::scene

@@ -1,5 +1,7 @@
 #include "scene/Recentre.h"
 
+#include "scene/Animation.h"
+
 #include <cmath>
 
 namespace gi::scene {
@@ -31,6 +33,8 @@ glm::vec3 recentreFarScene(Scene& scene) {
         }
     }
     scene.bounds = bounds;
+    scene.origin = origin;   // animatedBounds and poseScene place dynamic instances relative to it
+    scene.bounds = animatedBounds(scene);
     for (Light& light : scene.lights) light.position -= origin;
     for (Camera& camera : scene.cameras) camera.worldFromCamera[3] -= glm::vec4(origin, 0.0f);
     return origin;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <cstdint>
 #include <limits>
@@ -82,6 +83,37 @@ struct Instance {
     int node = -1;                       // glTF node index that placed it
     glm::mat4 worldFromLocal{1.0f};
     bool flipWinding = false;            // det(worldFromLocal) < 0; indices already reversed
+    bool dynamic = false;                // its node or an ancestor is animated (scene/Animation.h)
+};
+
+// A glTF node's place in the hierarchy and its rest transform, kept so animations can move it.
+struct SceneNode {
+    int parent = -1;                     // glTF node index, -1 for a root
+    glm::dvec3 translation{0.0};         // rest pose (TRS nodes)
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+    glm::dvec3 scale{1.0};
+    glm::dmat4 matrix{1.0};              // the rest local transform (TRS or the node's matrix)
+    bool hasMatrix = false;              // given as a matrix: glTF forbids animating it
+};
+
+enum class AnimationPath { Translation, Rotation, Scale };
+enum class AnimationInterpolation { Step, Linear, CubicSpline };
+
+// One animated property of one node (glTF 2.0 section 3.11). values holds one vec4 per key
+// (xyz, or a quaternion as x, y, z, w); for cubic splines three per key: in-tangent, value,
+// out-tangent.
+struct AnimationChannel {
+    int node = -1;
+    AnimationPath path = AnimationPath::Translation;
+    AnimationInterpolation interpolation = AnimationInterpolation::Linear;
+    std::vector<float> times;            // seconds, strictly increasing
+    std::vector<glm::vec4> values;
+};
+
+struct Animation {
+    std::string name;
+    std::vector<AnimationChannel> channels;
+    float duration = 0.0f;               // the last key time over all channels (s)
 };
 
 enum class LightType { Point, Spot, Directional };
@@ -117,7 +149,10 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Light> lights;
     std::vector<Camera> cameras;
-    Aabb bounds;                         // world-space bounds of all instances
+    Aabb bounds;                         // world-space bounds of all instances (in every
+                                         // pose, for animated scenes)
+    std::vector<SceneNode> nodes;        // indexed like the file's nodes
+    std::vector<Animation> animations;   // all played together, looping
     glm::vec3 origin{0.0f};              // the file's point at world (0,0,0): non-zero when
                                          // a far-away scene was recentred (scene/Recentre.h)
 

@@ -1,0 +1,150 @@
+// Dynamic GI with animated objects (assets/cornell_box/cornell_box_animated.gltf): a blue cube
+// slides along the front of the floor. Moving it through FrameRenderer::setPose must give the
+// same frame as uploading the scene in that pose from scratch; and since voxel GI
+// revoxelizes every frame, the indirect light around the cube should follow it, as the path
+// tracer's does (that part does not hold yet: see the disabled test).
+#include "GpuTest.h"
+
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "reference/ReferenceRenderer.h"
+#include "render/FrameRenderer.h"
+#include "scene/Animation.h"
+#include "scene/GltfLoader.h"
+#include "scene/SceneDefaults.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace gi::test {
+namespace {
+
+constexpr int kSize = 96;
+
+scene::Scene loadAnimated(double seconds) {
+    scene::Scene scene;
+    std::string error;
+    std::vector<std::string> warnings;
+    EXPECT_TRUE(scene::loadGltf(sourcePath("assets/cornell_box/cornell_box_animated.gltf"), scene,
+            error, warnings)) << error;
+    scene::addDefaults(scene);
+    scene::poseScene(scene, seconds);
+    return scene;
+}
+
+render::CameraView cameraOf(const scene::Scene& scene) {
+    return render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+}
+
+// The mean colour of the floor (y = 0) pixels whose point lies in [x0, x1] x [z0, z1].
+glm::dvec3 floorMean(const render::Image& image, const render::CameraView& camera, float x0,
+        float x1, float z0, float z1) {
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            glm::vec3 p;
+            if (!pixelOnPlaneY(camera, image.width, image.height, x, y, 0.0f, p)) continue;
+            if (p.x < x0 || p.x > x1 || p.z < z0 || p.z > z1) continue;
+            sum += glm::dvec3(image.at(x, y));
+            ++count;
+        }
+    }
+    EXPECT_GT(count, 4) << "the floor region is not in view";
+    return count > 0 ? sum / double(count) : sum;
+}
+
+double blueShare(const glm::dvec3& c) { return c.b / std::max(c.r + c.g + c.b, 1e-12); }
+
+class AnimationGpuTest : public GpuTest {};
+
+// Disabled because it does not hold with the default cascade (v = 32: 2.3 cm finest voxels
+// for this box). Measured at 96x96: where the cube stands at the end of its slide, the path
+// tracer's floor strip beside it keeps 0.902 of its indirect light (the cube hides the lit
+// walls from it), voxel GI 0.997; the strip's blue share moves 0.217 -> 0.221 in the
+// reference and not at all in voxel GI. The 8 cm cube is 3.5 finest voxels wide and cones
+// leave the floor one voxel up, so its effect on its neighbours is below the cascade's
+// resolution, although the cube itself is voxelized, lit and drawn where it is each frame.
+// Run with --gtest_also_run_disabled_tests; enable it once dynamic objects get finer voxels.
+TEST_F(AnimationGpuTest, DISABLED_AnimatedCubeMovesItsBounceLight) {
+    Settings settings;
+    settings.specular = 0.0f;
+    glm::dvec3 nearStart[2], nearEnd[2], truthStart[2], truthEnd[2];
+    const double times[2] = {0.0, 2.0};   // the cube at x = 0.10 m, then at x = 0.50 m
+    // Floor strips beside the cube's two end positions, on the side facing the slide.
+    const float startStrip[4] = {0.17f, 0.22f, -0.12f, 0.0f};
+    const float endStrip[4] = {0.38f, 0.43f, -0.12f, 0.0f};
+    for (int i = 0; i < 2; ++i) {
+        const scene::Scene scene = loadAnimated(times[i]);
+        gl::ShaderLibrary shaders;
+        render::FrameRenderer renderer;
+        std::string error;
+        ASSERT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
+        ASSERT_TRUE(renderer.setMode(render::GiMode::Voxel, error)) << error;
+        gl::GpuProfiler profiler;
+        const render::CameraView camera = cameraOf(scene);
+        renderer.render(camera, {kSize, kSize}, render::OutputComponent::Indirect, profiler);
+        profiler.flush();
+        const render::Image indirect = renderer.readback();
+        nearStart[i] = floorMean(indirect, camera, startStrip[0], startStrip[1], startStrip[2], startStrip[3]);
+        nearEnd[i] = floorMean(indirect, camera, endStrip[0], endStrip[1], endStrip[2], endStrip[3]);
+        ReferenceSettings reference;
+        reference.spp = 64;
+        reference.bounces = 1;
+        const reference::ReferenceResult truth =
+                reference::renderReference(scene, camera, kSize, kSize, reference);
+        truthStart[i] = floorMean(truth.indirect, camera, startStrip[0], startStrip[1], startStrip[2], startStrip[3]);
+        truthEnd[i] = floorMean(truth.indirect, camera, endStrip[0], endStrip[1], endStrip[2], endStrip[3]);
+    }
+    std::printf("blue share of the floor's indirect light, voxel (reference): beside the start "
+                "%.3f (%.3f) with the cube there, %.3f (%.3f) with it away; beside the end "
+                "%.3f (%.3f) away, %.3f (%.3f) there\n",
+            blueShare(nearStart[0]), blueShare(truthStart[0]), blueShare(nearStart[1]),
+            blueShare(truthStart[1]), blueShare(nearEnd[0]), blueShare(truthEnd[0]),
+            blueShare(nearEnd[1]), blueShare(truthEnd[1]));
+    auto sum = [](const glm::dvec3& c) { return c.r + c.g + c.b; };
+    std::printf("strip indirect, cube there / away: start voxel %.3f reference %.3f; end voxel "
+                "%.3f reference %.3f\n", sum(nearStart[0]) / sum(nearStart[1]),
+            sum(truthStart[0]) / sum(truthStart[1]), sum(nearEnd[1]) / sum(nearEnd[0]),
+            sum(truthEnd[1]) / sum(truthEnd[0]));
+    // Voxel GI must follow the reference: the strip darkens where the cube stands by at
+    // least half as much as in the reference (5% of its light), beyond the ~1% frame noise.
+    EXPECT_LT(sum(nearEnd[1]) / sum(nearEnd[0]), 0.95);
+}
+
+TEST_F(AnimationGpuTest, PoseUpdateMatchesAFreshUpload) {
+    Settings settings;
+    scene::Scene moving = loadAnimated(0.0);
+    const scene::Scene posed = loadAnimated(1.5);
+    auto frame = [&](render::FrameRenderer& renderer, const scene::Scene& scene) {
+        gl::GpuProfiler profiler;
+        renderer.render(cameraOf(scene), {kSize, kSize}, render::OutputComponent::Final, profiler);
+        profiler.flush();
+        return renderer.readback();
+    };
+    gl::ShaderLibrary shaders;
+    std::string error;
+    render::FrameRenderer updated, fresh;
+    ASSERT_TRUE(updated.init(moving, settings, shaders, error)) << error;
+    ASSERT_TRUE(updated.setMode(render::GiMode::Voxel, error)) << error;
+    (void)frame(updated, moving);
+    scene::poseScene(moving, 1.5);
+    updated.setPose(moving);
+    const render::Image a = frame(updated, moving);
+    ASSERT_TRUE(fresh.init(posed, settings, shaders, error)) << error;
+    ASSERT_TRUE(fresh.setMode(render::GiMode::Voxel, error)) << error;
+    const render::Image b = frame(fresh, posed);
+    ASSERT_EQ(a.rgb.size(), b.rgb.size());
+    double diff = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+        diff += std::abs(double(a.rgb[i]) - double(b.rgb[i]));
+        total += std::abs(double(b.rgb[i]));
+    }
+    // Voxel GI's stochastic rounding seeds from the frame index, so the two differ by the
+    // rounding noise only; a stale vertex buffer would leave a second cube behind (~3%).
+    EXPECT_LT(diff / total, 0.005) << "mean relative difference " << diff / total;
+}
+
+} // namespace
+} // namespace gi::test
