@@ -71,7 +71,8 @@ def errors(image, reference):
 
 def voxel_bytes(memory):
     return sum(v for k, v in memory.items() if k in (
-        "voxel/albedo", "voxel/normal", "voxel/irradiance", "voxel/helper", "voxel/lock"))
+        "voxel/albedo", "voxel/normal", "voxel/irradiance", "voxel/helper", "voxel/lock",
+        "voxel/pyramid"))
 
 
 def ratio(a, b):
@@ -176,8 +177,11 @@ def main():
         ("the thesis' fragment-mean injection", {"voxel.inject_fragment_mean": 1}),
         ("the thesis' 1/(1+d^2) falloff", {"voxel.falloff": 1}),
         ("bilinear upsampling (thesis)", {"voxel.upsample_depth": 0}),
+        ("trace scale 0.25", {"voxel.trace_scale": 0.25}),
         ("trace scale 1", {"voxel.trace_scale": 1}),
+        ("v = 16", {"voxel.resolution": 16}),
         ("v = 64", {"voxel.resolution": 64}),
+        ("v = 128, 2 cascades", {"voxel.resolution": 128, "voxel.cascades": 2}),
         ("injection 4v", {"voxel.inject_resolution": 128}),
         ("scene-centred cascade + max-axis coverage", {"voxel.scene_centred": 1,
                                                        "voxel.coverage_max_axis": 1}),
@@ -197,7 +201,8 @@ def main():
 
     say("## GPU memory of the cascade\n")
     say("Five textures of v^3 l texels: albedo, irradiance and the per-light helper in RGBA16F,")
-    say("normals in RGBA8_SNORM, the lock in R32UI (32 bytes per voxel). Thesis: 3.46 MB at")
+    say("normals in RGBA8_SNORM, the lock in R32UI (32 bytes per voxel), and the RGBA16F pyramid")
+    say("of the coarsest level's light ((v/2)^3 texels and their mips). Thesis: 3.46 MB at")
     say("v=32, l=3; 27 MB at v=64; 216 MB at v=128; 36 MB at v=64, l=4.\n")
     say("| v | l=3 | l=4 |")
     say("|---|---|---|")

@@ -24,10 +24,15 @@
 #define BIND_TEX_PRESENT_SOURCE     2   // RGBA32F linear radiance the viewer presents
 
 #define BIND_TEX_INDIRECT           4   // rgba16f screen-space E_ind (W/m^2), a = view depth (m)
-#define BIND_TEX_VOXEL_ALBEDO       5   // sampler3D rgba16f, rgb = albedo, a = coverage
+#define BIND_TEX_VOXEL_ALBEDO       5   // sampler3D rgba16f, rgb = albedo x coverage, a = coverage
 #define BIND_TEX_VOXEL_IRRADIANCE   6   // sampler3D rgba16f, rgb = irradiance E (W/m^2)
-#define BIND_TEX_VOXEL_NORMAL       7   // sampler3D rgba16f, xyz = mean normal
+#define BIND_TEX_VOXEL_NORMAL       7   // sampler3D rgba8_snorm, xyz = mean normal, w = the
+                                        // surface's offset from the voxel centre along it
+                                        // (voxel sizes)
 #define BIND_TEX_FILTER_SOURCE      8   // sampler2D rgba16f, traced E_ind + view depth
+#define BIND_TEX_VOXEL_PYRAMID      9   // sampler3D rgba16f mipmapped, the coarsest level
+                                        // averaged 2^(m+1) voxels per axis at mip m:
+                                        // rgb = rho E x coverage (W/m^2), a = coverage
 
 // Texture units of the atlas passes (gi/atlas). Atlas layers are R x R, texel (i, j) covers
 // atlas coordinates [i, i+1) x [j, j+1) / R; alpha 0 = no surface.
@@ -46,13 +51,17 @@
 
 // Image units (imageLoad/Store/atomics) of the voxel passes.
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
-#define BIND_IMG_VOXEL_NORMAL       1   // rgba16f, running average of normals, w = unused
+#define BIND_IMG_VOXEL_NORMAL       1   // rgba8_snorm, running averages: xyz = normal, w = the
+                                        // surface's offset from the voxel centre along it
+                                        // (voxel sizes)
 #define BIND_IMG_VOXEL_IRRADIANCE   2   // rgba16f, rgb = E summed over lights (W/m^2),
                                         // a = surface area in the voxel / voxel face area
 #define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = flux / voxel face area (INJECT_AREA)
                                         // or the current light's mean E (INJECT_FRAGMENT)
 #define BIND_IMG_VOXEL_LOCK         4   // r32ui, bit 0 = spinlock, bits 1..31 = fragment count
 #define BIND_IMG_FILTER_TARGET      5   // rgba16f, filtered E_ind + view depth
+#define BIND_IMG_VOXEL_PYRAMID_SOURCE 6 // rgba16f, pyramid mip m-1 read while mip m is built
+#define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
 
 #define VOXEL_MAX_LEVELS            8
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel

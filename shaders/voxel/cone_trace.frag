@@ -1,17 +1,38 @@
 // Cone tracing (thesis 4.2.5, 4.3.3.4, Listing 4.5): 9 cones per pixel, one along the normal
-// and eight rotated by 50 degrees around it, each a volume ray-march whose step and cascade
-// level grow with the cone's diameter; front-to-back accumulation until the cone is opaque
-// or leaves the volume. Samples of voxels facing away from the cone add no light (they
-// still occlude) and a voxel is read at most once per cone.
+// and eight rotated by 50 degrees around it, each marched front to back until it is opaque
+// or leaves the volume. Voxels facing away from the cone are skipped (thesis).
 //
-// Calibration (so the output is E_ind in W/m^2, DESIGN.md): a voxel's premultiplied
-// outgoing radiance is albedo/pi * E (E premultiplied by coverage through propagation);
-// a cone returns the composited radiance L_i seen along it (no sky: an escaping cone adds
-// nothing); E_ind = pi * sum_i w_i L_i, where w_i is the fraction of the cosine-weighted
-// hemisphere the cone stands for (central cap: sin^2(theta_b), each ring cone
+// Calibration (so the output is E_ind in W/m^2, DESIGN.md): a voxel's outgoing radiance is
+// albedo/pi * E; a cone returns the composited radiance L_i seen along it (no sky: an
+// escaping cone adds nothing); E_ind = pi * sum_i w_i L_i, where w_i is the fraction of the
+// cosine-weighted hemisphere the cone stands for (central cap: sin^2(theta_b), each ring cone
 // cos^2(theta_b)/8, theta_b halfway between the central axis and the ring). The thesis'
-// weights (cos theta_i, normalised by their sum) differ from these by under 10%.
-// Opacity uses the step-length correction alpha' = 1 - (1 - alpha)^(step / voxel size).
+// weights (cos theta_i, normalised by their sum) differ from these by under 10%. Albedo and E
+// are both stored premultiplied by coverage, so a filtered read's light per covered area is
+// albedo x E / coverage^2: an empty neighbour lowers a trilinear read's coverage, not the
+// albedo it returns.
+//
+// Finer levels (the thesis' cascade): the cone steps by its diameter through the level whose
+// voxels match it, reading filtered voxels; a sample of coverage a is as opaque as
+// 1 - (1 - a)^(step / voxel size), so two samples in one voxel add up to one voxel's worth
+// (every sample counts: reading each voxel once, as the thesis does, left a wall half its
+// optical depth wherever steps were half a voxel).
+//
+// The coarsest level: a cone there is a ray to the voxels it reads, narrower than them near
+// its start and wider than any voxel the cascade has once it outgrows them (the cascade is
+// centred on the camera, so a scene seen from outside lies wholly in the coarsest level).
+// Its axis is walked voxel by voxel (a 3D DDA). A voxel holding one flat surface (voxelize
+// keeps the surface's offset from the voxel centre in the normal's w) is met where the axis
+// crosses that plane, with opacity = coverage, or not at all; other occupied voxels occlude
+// like finer levels' samples over the axis' path through them. The light met there is the
+// reflected light over the cone's footprint: the filtered voxels while the cone is narrower
+// than they are, then the pyramid above the coarsest level (RadiancePyramidPass.h) at the
+// cone's width.
+// Reading one voxel instead made the cone a ray that sees a small bright patch (the ceiling
+// over a light) in full or not at all, which finer voxels alias ever more; and filtered
+// coverage spread each wall over two half-opaque voxel layers that let a quarter of a
+// crossing ray through. The pyramid holds light only: its coverage would halve a one-voxel
+// wall's opacity per mip and let cones through walls.
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
 #include "voxel_common.glsl"
@@ -19,6 +40,7 @@
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelAlbedoTexture;
 layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTexture;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
+layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
 
 layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 
@@ -33,11 +55,15 @@ in VertexData {
 layout(location = 0) out vec4 outIndirect;
 
 const float PI = 3.14159265358979;
-const int kMaxSteps = 512;
+// A ray crosses at most 3 v voxels of the coarsest level; finer levels add fewer steps.
+const int kMaxSteps = 1024;
+// A voxel whose mean normal is at least this long holds one flat surface (two surfaces at
+// right angles in equal parts give 0.71).
+const float kFlatNormal = 0.9;
 
 struct VoxelSample {
-    vec4 albedo;       // rgb = albedo, a = coverage
-    vec3 irradiance;   // premultiplied by coverage
+    vec4 albedo;       // rgb = albedo x coverage, a = coverage
+    vec3 irradiance;   // E x coverage
     vec3 normal;
 };
 
@@ -50,57 +76,129 @@ VoxelSample readLevel(vec3 p, int level) {
     return s;
 }
 
+// Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
+// around p on the coarsest level: the filtered voxels while the cone is narrower than they
+// are, then the pyramid mip whose texels match the diameter (blended over the first octave).
+vec3 coarsestLight(vec3 p, float diameter) {
+    int coarsest = voxelLevels() - 1;
+    float spread = log2(diameter / levelVoxelSize(coarsest));
+    vec4 wide = vec4(0.0);
+    if (spread > 0.0) {
+        wide = textureLod(voxelPyramidTexture, (p - levelOrigin(coarsest)) / levelExtent(coarsest),
+                max(spread - 1.0, 0.0));
+        if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
+    }
+    vec3 tc = voxelTexcoord(p, coarsest);
+    vec4 albedo = texture(voxelAlbedoTexture, tc);
+    float coverage = max(albedo.a, 1e-4);
+    vec3 light = albedo.rgb * texture(voxelIrradianceTexture, tc).rgb / (coverage * coverage);
+    return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
+}
+
 vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
     float tanHalf = voxel.trace.x;
     float finest = levelVoxelSize(0);
+    int coarsest = voxelLevels() - 1;
+    float coarsestSize = levelVoxelSize(coarsest);
+    vec3 coarsestOrigin = levelOrigin(coarsest);
+    ivec3 coarsestSlab = ivec3(0, 0, coarsest * voxelResolution());
     int startLevel = max(finestLevel(origin), 0);
     float dist = levelVoxelSize(startLevel);
     vec3 radiance = vec3(0.0);
     float opacity = 0.0;
-    ivec4 lastTexel = ivec4(-1);
-    for (int step = 0; step < kMaxSteps && dist < maxDistance && opacity < 0.99; ++step) {
+    int steps = 0;
+    while (steps < kMaxSteps && dist < maxDistance && opacity < 0.99) {
         vec3 p = origin + dir * dist;
         int available = finestLevel(p);
         if (available < 0) break;
         float diameter = max(2.0 * tanHalf * dist, finest);
-        float lod = clamp(log2(diameter / finest), float(available), float(voxelLevels() - 1));
+        float lod = clamp(log2(diameter / finest), float(available), float(coarsest));
         int level = int(floor(lod));
         float blend = lod - float(level);
-        // Once the cone is wider than the coarsest level's voxels, steps stay one such voxel
-        // long: longer steps would jump over walls the level resolves.
-        float stepLength = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *
-                voxel.trace.z, 0.25 * finest);
-        ivec4 texel = ivec4(voxelTexel(p, level), level);
-        if (texel == lastTexel) {
-            dist += stepLength;
-            continue;
-        }
-        lastTexel = texel;
-        VoxelSample s = readLevel(p, level);
-        float voxelSize = levelVoxelSize(level);
-        if (blend > 0.0 && level + 1 < voxelLevels()) {
-            VoxelSample t = readLevel(p, level + 1);
-            s.albedo = mix(s.albedo, t.albedo, blend);
-            s.irradiance = mix(s.irradiance, t.irradiance, blend);
-            s.normal = mix(s.normal, t.normal, blend);
-            voxelSize = mix(voxelSize, levelVoxelSize(level + 1), blend);
-        }
-        float alpha = clamp(s.albedo.a, 0.0, 1.0);
-        if (alpha > 0.0) {
-            float corrected = 1.0 - pow(1.0 - min(alpha, 0.9999), stepLength / voxelSize);
-            vec3 light = s.albedo.rgb / PI * s.irradiance * (corrected / alpha);
-            // A voxel facing away from the cone is skipped, as in the thesis: its surface
-            // sends no light this way, and its occlusion would mostly be the cone's own
-            // surface seen from behind (the voxel layer the cone starts in).
-            if (dot(s.normal, dir) > 0.0) {
-                dist += stepLength;
-                continue;
+        float corrected;
+        vec3 reflected;
+        if (level == coarsest) {
+            // Walk the axis voxel by voxel through the coarsest level (a 3D DDA) to the
+            // first voxel it meets a surface in; the loop only fetches coverage, so the
+            // costly reads below run once per surface met.
+            bool found = false, crossed = false;
+            float hit = 0.0, coverage = 0.0, path = 0.0, entry = dist;
+            while (steps < kMaxSteps && dist < maxDistance) {
+                ++steps;
+                p = origin + dir * dist;
+                vec3 local = (p - coarsestOrigin) / coarsestSize;
+                if (any(lessThan(local, vec3(0.0))) ||
+                        any(greaterThanEqual(local, vec3(voxelResolution())))) {
+                    dist = maxDistance;
+                    break;
+                }
+                // A finer level takes over again where the cone is still narrow enough (the
+                // test the level choice above makes).
+                if (coarsest > 0 && log2(diameter / finest) < float(coarsest) &&
+                        insideLevel(p, coarsest - 1)) {
+                    break;
+                }
+                vec3 cell = floor(local);
+                vec3 toExit = mix(local - cell, cell + 1.0 - local, greaterThan(dir, vec3(0.0)));
+                vec3 exitAt = toExit / max(abs(dir), vec3(1e-6));
+                path = max(min(exitAt.x, min(exitAt.y, exitAt.z)), 1e-3) * coarsestSize;
+                entry = dist;
+                dist += path + 1e-3 * coarsestSize;
+                diameter = max(2.0 * tanHalf * dist, finest);
+                ivec3 texel = ivec3(cell) + coarsestSlab;
+                coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0);
+                if (coverage <= 0.0) continue;
+                vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
+                float normalLength = length(plane.xyz);
+                float cosine = dot(dir, plane.xyz);
+                // A voxel facing away from the cone is skipped, as in the thesis: its surface
+                // sends no light this way, and its occlusion would mostly be the cone's own
+                // surface seen from behind (the voxel layer the cone starts in).
+                if (cosine > 0.0) continue;
+                if (normalLength > kFlatNormal) {
+                    // One flat surface: the axis meets it where it crosses its plane, or not
+                    // at all in this voxel, and crossing it is an occlusion of `coverage`.
+                    vec3 centre = coarsestOrigin + (cell + 0.5) * coarsestSize;
+                    vec3 onPlane = centre + plane.w * coarsestSize * plane.xyz / normalLength;
+                    hit = dot(onPlane - p, plane.xyz) / cosine;
+                    if (hit < -0.01 * coarsestSize || hit > path + 0.01 * coarsestSize) continue;
+                    crossed = true;
+                } else {
+                    // Several surfaces: occluding along the whole path, light read halfway.
+                    hit = 0.5 * path;
+                }
+                found = true;
+                break;
             }
-            if (voxel.trace.w != 0.0) light /= 1.0 + dist * dist; // the thesis' falloff
-            radiance += (1.0 - opacity) * light;
-            opacity += (1.0 - opacity) * corrected;
+            if (!found) continue;
+            corrected = crossed ? coverage
+                    : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
+            hit = clamp(hit, 0.0, path);
+            reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest));
+        } else {
+            ++steps;
+            float path = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *
+                    voxel.trace.z, 0.25 * finest);
+            dist += path;
+            VoxelSample s = readLevel(p, level);
+            float voxelSize = levelVoxelSize(level);
+            if (blend > 0.0) {
+                VoxelSample t = readLevel(p, level + 1);
+                s.albedo = mix(s.albedo, t.albedo, blend);
+                s.irradiance = mix(s.irradiance, t.irradiance, blend);
+                s.normal = mix(s.normal, t.normal, blend);
+                voxelSize = mix(voxelSize, levelVoxelSize(level + 1), blend);
+            }
+            float coverage = clamp(s.albedo.a, 0.0, 1.0);
+            // Facing away: skipped as above.
+            if (coverage <= 0.0 || dot(s.normal, dir) > 0.0) continue;
+            corrected = 1.0 - pow(1.0 - min(coverage, 0.9999), path / voxelSize);
+            reflected = s.albedo.rgb * s.irradiance / (coverage * coverage);
         }
-        dist += stepLength;
+        vec3 light = reflected / PI * corrected;
+        if (voxel.trace.w != 0.0) light /= 1.0 + dist * dist; // the thesis' falloff
+        radiance += (1.0 - opacity) * light;
+        opacity += (1.0 - opacity) * corrected;
     }
     return radiance;
 }

@@ -38,7 +38,7 @@ void main() {
         ivec3 texel = voxelTexel(p, level);
         vec4 albedo = texelFetch(voxelAlbedoTexture, texel, 0);
         if (albedo.a <= 0.0) continue;
-        vec3 color = albedo.rgb;
+        vec3 color = albedo.rgb / albedo.a;
         if (voxel.injection.w == float(VIEW_IRRADIANCE)) {
             color = texelFetch(voxelIrradianceTexture, texel, 0).rgb / max(albedo.a, 1e-4) / PI;
         } else if (voxel.injection.w == float(VIEW_NORMAL)) {

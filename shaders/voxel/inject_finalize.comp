@@ -6,7 +6,9 @@
 // becomes its surface area in units of its face area (at most 1) and its irradiance the
 // summed flux over max(area, face area). A voxel a surface only grazes thus stays
 // translucent and dim instead of turning into an opaque cube glowing with the flux of a
-// whole light pixel: irradiance and coverage stay premultiplied, as propagation expects.
+// whole light pixel. Albedo and irradiance are both stored premultiplied by coverage, as
+// propagation and the filtered reads of cone tracing expect (an empty neighbour then
+// lowers a trilinear read's coverage, not the albedo it returns).
 // Both clear the helper.
 #include "voxel_common.glsl"
 
@@ -26,7 +28,8 @@ void main() {
         float area = current.a;
         if (area <= 0.0) return;
         vec4 albedo = imageLoad(voxelAlbedo, texel);
-        imageStore(voxelAlbedo, texel, vec4(albedo.rgb, min(area, 1.0)));
+        float coverage = min(area, 1.0);
+        imageStore(voxelAlbedo, texel, vec4(albedo.rgb * coverage, coverage));
         total = helper.rgb / max(area, 1.0);
     } else {
         if (helper.a == 0.0) return;

@@ -1,16 +1,17 @@
 // Fills the centre of cascade level L from level L-1, which covers exactly that centre at
 // twice the resolution (thesis 4.3.3.3, Listings 4.3/4.4): each invocation averages the
-// 2x2x2 finer voxels. Albedo is averaged weighted by coverage (an opaque black voxel stays
-// distinct from an empty one), coverage and irradiance are averaged over all 8 (so both are
-// premultiplied by coverage), normals weighted by coverage. One dispatch per level, 8^3
-// work groups, (v/2)^3 invocations.
+// 2x2x2 finer voxels. Albedo, coverage and irradiance are averaged over all 8 (albedo and
+// irradiance are premultiplied by coverage, so an opaque black voxel stays distinct from an
+// empty one and the averages stay premultiplied), normals weighted by coverage, and the
+// surface's offset along the new normal (normal.w) from the children's surface points. One
+// dispatch per level, 8^3 work groups, (v/2)^3 invocations.
 //
 // With voxel.coverage_max_axis (modes.z = 1) the coarse coverage is instead the opacity a
 // ray meets along the most opaque axis: per axis, the mean over the 4 columns of
 // 1 - (1 - a)(1 - b) for the column's two voxels, maximised over the axes. A wall filling one
 // of the two layers then stays opaque at every level instead of halving its coverage per
-// level (which lets cones see through walls and dims what they do see); irradiance is
-// rescaled by the same factor so emission per covered area is unchanged.
+// level (which lets cones see through walls and dims what they do see); albedo and
+// irradiance are rescaled by the same factor so both stay per covered area unchanged.
 #include "voxel_common.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
@@ -28,18 +29,17 @@ void main() {
     vec4 albedo = vec4(0.0), irradiance = vec4(0.0);
     vec3 normal = vec3(0.0);
     float coverage[8];
+    vec4 plane[8];
     for (int i = 0; i < 8; ++i) {
         ivec3 fine = fineBase + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
         vec4 a = imageLoad(voxelAlbedo, fine);
         coverage[i] = clamp(a.a, 0.0, 1.0);
-        albedo.rgb += a.rgb * a.a;
-        albedo.a += a.a;
+        albedo += a;
         irradiance += imageLoad(voxelIrradiance, fine);
-        normal += imageLoad(voxelNormal, fine).xyz * a.a;
+        plane[i] = imageLoad(voxelNormal, fine);
+        normal += plane[i].xyz * a.a;
     }
-    if (albedo.a >= 0.01) albedo.rgb /= albedo.a;
-    else albedo.rgb = vec3(0.0);
-    albedo.a /= 8.0;
+    albedo /= 8.0;
     irradiance /= 8.0;
     if (voxel.modes.z != 0.0 && albedo.a > 0.0) {
         float axisOpacity = 0.0;
@@ -53,11 +53,25 @@ void main() {
             axisOpacity = max(axisOpacity, sum / 4.0);
         }
         irradiance.rgb *= axisOpacity / albedo.a;
-        albedo.a = axisOpacity;
+        albedo *= axisOpacity / albedo.a;
     }
     float len = length(normal);
+    normal = len > 1e-4 ? normal / len : vec3(0.0);
+    // The surface's distance from this voxel's centre along its normal: the mean over the
+    // children of their surface point (child centre + its offset along its own normal),
+    // weighted by coverage, in this voxel's sizes (a child is half of one).
+    float offset = 0.0, weight = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        float childLength = length(plane[i].xyz);
+        if (coverage[i] <= 0.0 || childLength < 1e-4) continue;
+        vec3 childCentre = vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1) - 0.5;
+        vec3 surface = childCentre + plane[i].w * plane[i].xyz / childLength;
+        offset += coverage[i] * 0.5 * dot(surface, normal);
+        weight += coverage[i];
+    }
+    offset = weight > 0.0 ? clamp(offset / weight, -1.0, 1.0) : 0.0;
     ivec3 target = coarse + ivec3(v / 4, v / 4, v / 4 + level * v);
     imageStore(voxelAlbedo, target, albedo);
     imageStore(voxelIrradiance, target, irradiance);
-    imageStore(voxelNormal, target, vec4(len > 1e-4 ? normal / len : vec3(0.0), 0.0));
+    imageStore(voxelNormal, target, vec4(normal, offset));
 }

@@ -1,7 +1,9 @@
 // Voxelization, fragment stage: averages albedo (with coverage 1) and normal of every
 // fragment into the finest level containing it, under the voxel's spinlock (thesis 4.3.3.1),
 // and sums the surface area the fragments stand for (in units of the voxel's face area), so
-// light injection can turn flux into the voxel's mean irradiance.
+// light injection can turn flux into the voxel's mean irradiance. The normal's w averages
+// the surface's signed distance from the voxel centre along the normal (in voxel sizes), so
+// a voxel of one flat surface knows where in it that surface lies.
 #include "voxel_common.glsl"
 
 layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
@@ -36,12 +38,15 @@ void main() {
     ivec3 texel = voxelTexel(vin.position, level);
     vec3 n = normalize(vin.normal);
     float size = levelVoxelSize(level);
+    vec3 centre = levelOrigin(level) +
+            (vec3(texel - ivec3(0, 0, level * voxelResolution())) + 0.5) * size;
+    float planeOffset = clamp(dot(vin.position - centre, n) / size, -1.0, 1.0);
     float area = voxel.modes.y / max(projectedCosine, 0.577) / (size * size);
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);
         imageStore(voxelAlbedo, texel, roundToHalf(keep * albedo + add * vec4(baseColor.rgb, 1.0), dither));
-        imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, 0.0), dither));
+        imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, planeOffset), dither));
         vec4 irradiance = imageLoad(voxelIrradiance, texel);
         imageStore(voxelIrradiance, texel, roundToHalf(vec4(irradiance.rgb, irradiance.a + area), dither));
     })

@@ -158,7 +158,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.voxel.depthUpsample; }),
         boolSetting("voxel.jitter", "turn the cone ring per pixel in a 4x4 pattern",
                 [](Settings& s) -> bool& { return s.voxel.jitter; }),
-        intSetting("voxel.filter", "edge-aware smoothing radius of the traced result (texels)", 0, 4,
+        intSetting("voxel.filter",
+                "edge-aware smoothing radius of the traced result (texels at voxel.trace_scale=0.5, "
+                "scaled with the trace scale)", 0, 4,
                 [](Settings& s) -> int& { return s.voxel.filterRadius; }),
         intSetting("voxel.debug_level", "cascade level shown by the voxel debug views", 0, 7,
                 [](Settings& s) -> int& { return s.voxel.debugLevel; }),

@@ -8,7 +8,6 @@
 #include "gi/voxel/VoxelizationManager.h"
 #include "reference/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
-#include "scene/GltfLoader.h"
 #include "scene/SceneDefaults.h"
 
 #include <glad/gl.h>
@@ -34,16 +33,6 @@ std::size_t texelIndex(const voxel::CascadeVolume& volume, glm::ivec3 voxel, int
     const auto v = std::size_t(volume.resolution());
     return (std::size_t(level) * v + std::size_t(voxel.z)) * v * v + std::size_t(voxel.y) * v +
            std::size_t(voxel.x);
-}
-
-scene::Scene loadCornell() {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(sourcePath("assets/cornell_box/cornell_box.gltf"), scene, error, warnings))
-            << error;
-    scene::addDefaults(scene);
-    return scene;
 }
 
 // One voxel-GI frame of `scene` from its camera 0; the renderer stays alive for read-backs.
@@ -97,7 +86,7 @@ class VoxelGpuTest : public GpuTest {};
 // At multiplier 8 every voxel a wall passes through is occupied (the bound: 99%), and
 // nothing is occupied farther than one voxel from a surface.
 TEST_F(VoxelGpuTest, CornellSurfacesCoverTheirVoxels) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     VoxelFrame frame(scene, Settings{}, {32, 32});
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
@@ -205,9 +194,10 @@ TEST_F(VoxelGpuTest, PlaneUnderDirectionalLightHasAnalyticIrradiance) {
 }
 
 // Propagation conserves the coverage-weighted colour: a coarse level's centre holds, summed,
-// one eighth of the finer level's albedo x coverage (1%, half-float sums).
+// one eighth of the finer level's albedo x coverage, which the albedo texture stores
+// premultiplied (1%, half-float sums).
 TEST_F(VoxelGpuTest, PropagationConservesCoverageWeightedColour) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     scene::Scene inside = scene;
     // From the box's centre with a 0.3 m finest level, the box straddles all three levels.
     inside.cameras[0] = lookAtCamera({0.278f, 0.27f, -0.28f}, {0.278f, 0.27f, -0.6f}, 60.0f);
@@ -222,18 +212,97 @@ TEST_F(VoxelGpuTest, PropagationConservesCoverageWeightedColour) {
         for (int z = 0; z < v; ++z)
             for (int y = 0; y < v; ++y)
                 for (int x = 0; x < v; ++x) {
-                    const glm::vec4 a = albedo[texelIndex(volume, {x, y, z}, level - 1)];
-                    fine += glm::dvec3(a) * double(a.a);
+                    fine += glm::dvec3(albedo[texelIndex(volume, {x, y, z}, level - 1)]);
                 }
         for (int z = v / 4; z < 3 * v / 4; ++z)
             for (int y = v / 4; y < 3 * v / 4; ++y)
                 for (int x = v / 4; x < 3 * v / 4; ++x) {
-                    const glm::vec4 a = albedo[texelIndex(volume, {x, y, z}, level)];
-                    coarse += glm::dvec3(a) * double(a.a);
+                    coarse += glm::dvec3(albedo[texelIndex(volume, {x, y, z}, level)]);
                 }
         ASSERT_GT(fine.r, 0.0) << "level " << level - 1 << " is empty";
         for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(coarse[c] * 8.0, fine[c], 0.01 * fine[c]) << "level " << level << " channel " << c;
+        }
+    }
+}
+
+// Each voxel of a flat surface knows where in it the surface lies (normal.w, the signed
+// offset from the voxel centre along the normal, in voxel sizes), at the level it was
+// voxelized at and after propagation: a horizontal square at y = 0.013 m, probed in every
+// level's voxels it passes through. Tolerance: one snorm8 step (1/127) from the stochastic
+// rounding of each stored running average, doubled for the levels propagated from it.
+TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
+    scene::Scene scene;
+    scene.materials.push_back(scene::Material{});
+    constexpr float kPlaneY = 0.013f;
+    addPrimitive(scene, horizontalSquare(1.0f, kPlaneY));
+    // 0.2 m above the square: the finer levels around the camera reach it too.
+    scene.cameras.push_back(lookAtCamera({0.0f, 0.2f, 0.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
+    scene::addDefaults(scene);
+    VoxelFrame frame(scene, Settings{}, {32, 32});
+    const voxel::CascadeVolume& volume = frame.manager().volume();
+    const auto albedo = readVolume(frame.manager().textures().albedo, volume);
+    const auto normal = readVolume(frame.manager().textures().normal, volume);
+    const int v = volume.resolution();
+    int direct = 0, propagated = 0;
+    for (int level = 0; level < volume.levels(); ++level)
+        for (int z = 0; z < v; ++z)
+            for (int y = 0; y < v; ++y)
+                for (int x = 0; x < v; ++x) {
+                    const std::size_t i = texelIndex(volume, {x, y, z}, level);
+                    const glm::vec3 centre = volume.voxelCenter({x, y, z}, level);
+                    const float size = volume.voxelSize(level);
+                    // Voxels well inside the square, whose slab holds the plane.
+                    if (albedo[i].a <= 0.0f || std::abs(centre.y - kPlaneY) > 0.5f * size ||
+                            std::abs(centre.x) > 0.9f || std::abs(centre.z) > 0.9f) {
+                        continue;
+                    }
+                    const float expected = (kPlaneY - centre.y) / size;
+                    const bool filled = level > 0 && volume.finestLevelContaining(centre) != level;
+                    const float tolerance = (filled ? 2.0f : 1.0f) / 127.0f + 1e-3f;
+                    EXPECT_NEAR(normal[i].y, 1.0f, 0.02f) << "Probe at level " << level;
+                    EXPECT_NEAR(normal[i].w, expected, tolerance)
+                            << "Probe at (" << x << "," << y << "," << z << ") level " << level
+                            << (filled ? " (propagated)" : "");
+                    ++(filled ? propagated : direct);
+                }
+    std::printf("plane offsets probed in %d voxelized and %d propagated voxels\n", direct, propagated);
+    EXPECT_GT(direct, 50);
+    EXPECT_GT(propagated, 20);
+}
+
+// The pyramid above the coarsest level averages its reflected light: mip m summed over its
+// texels holds 1/8^(m+1) of the coarsest level's rho E x coverage summed over its voxels, and
+// of its coverage (1%, half-float sums).
+TEST_F(VoxelGpuTest, PyramidConservesTheCoarsestLight) {
+    const scene::Scene scene = loadCornellBox();
+    VoxelFrame frame(scene, Settings{}, {32, 32});
+    const voxel::VoxelTextures& textures = frame.manager().textures();
+    const voxel::CascadeVolume& volume = frame.manager().volume();
+    const auto albedo = readVolume(textures.albedo, volume);
+    const auto irradiance = readVolume(textures.irradiance, volume);
+    const int v = volume.resolution();
+    const int coarsest = volume.levels() - 1;
+    glm::dvec4 level(0.0);
+    for (int z = 0; z < v; ++z)
+        for (int y = 0; y < v; ++y)
+            for (int x = 0; x < v; ++x) {
+                const std::size_t i = texelIndex(volume, {x, y, z}, coarsest);
+                if (albedo[i].a <= 0.0f) continue;
+                const glm::vec3 reflected = glm::vec3(albedo[i]) * glm::vec3(irradiance[i]) / albedo[i].a;
+                level += glm::dvec4(glm::dvec3(reflected), double(albedo[i].a));
+            }
+    ASSERT_GT(level.a, 0.0);
+    for (int mip = 0; mip < textures.pyramidLevels(); ++mip) {
+        const int size = v / (2 << mip);
+        std::vector<glm::vec4> texels(std::size_t(size) * std::size_t(size) * std::size_t(size));
+        glGetTextureImage(textures.pyramid.id(), mip, GL_RGBA, GL_FLOAT,
+                GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
+        glm::dvec4 sum(0.0);
+        for (const glm::vec4& t : texels) sum += glm::dvec4(t);
+        const double scale = std::pow(8.0, double(mip + 1));
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_NEAR(sum[c] * scale, level[c], 0.01 * level[c]) << "mip " << mip << " channel " << c;
         }
     }
 }
@@ -277,12 +346,13 @@ TEST_F(VoxelGpuTest, SpinlockAveragesUnderHeavyContention) {
 }
 
 TEST_F(VoxelGpuTest, MemoryMatchesAllocationAndThesisBudget) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     VoxelFrame frame(scene, Settings{}, {32, 32});
     std::size_t volumeBytes = 0;
     for (const gl::MemoryItem& item : frame.manager().textures().memory()) volumeBytes += item.bytes;
-    // 5 textures of v^3 l texels: 3 x RGBA16F (8 B) + RGBA8_SNORM (4 B) + R32UI (4 B).
-    EXPECT_EQ(volumeBytes, std::size_t(32) * 32 * 32 * 3 * 32);
+    // 5 textures of v^3 l texels: 3 x RGBA16F (8 B) + RGBA8_SNORM (4 B) + R32UI (4 B), and
+    // the RGBA16F pyramid above the coarsest level: 16^3 + 8^3 + 4^3 + 2^3 + 1 texels.
+    EXPECT_EQ(volumeBytes, std::size_t(32) * 32 * 32 * 3 * 32 + (4096 + 512 + 64 + 8 + 1) * 8);
     EXPECT_LE(double(volumeBytes), 3.46e6) << "the thesis needs 3.46 MB for the same data";
 }
 
@@ -290,7 +360,7 @@ TEST_F(VoxelGpuTest, MemoryMatchesAllocationAndThesisBudget) {
 // wall and greener beside the green (right) wall. Probes are the floor's left and right
 // quarters in the bottom rows of the classic view.
 TEST_F(VoxelGpuTest, CornellFloorBleedsWallColours) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     VoxelFrame frame(scene, Settings{}, {96, 96}, render::OutputComponent::Indirect);
     const render::Image image = frame.image();
     ASSERT_TRUE(render::allFinite(image));
@@ -315,7 +385,7 @@ TEST_F(VoxelGpuTest, CornellFloorBleedsWallColours) {
 // show each wall's colour bleeding onto its side of the floor.
 TEST_F(VoxelGpuTest, OffscreenWallStillLightsTheFloor) {
     auto indirectAt = [&](const glm::vec3& floorPoint) {
-        scene::Scene scene = loadCornell();
+        scene::Scene scene = loadCornellBox();
         // 20 degrees wide from 25 cm above: the view spans +-5 cm around the point, which is
         // 6 cm from the wall, so no wall is in the picture.
         scene.cameras[0] = lookAtCamera(floorPoint + glm::vec3(0.0f, 0.25f, 0.17f), floorPoint, 20.0f);
@@ -346,7 +416,7 @@ TEST_F(VoxelGpuTest, OffscreenWallStillLightsTheFloor) {
 // indirect component must be within the 0.85-1.15 of the reference's. The relative
 // RMSE is printed for the record (voxel artefacts keep it far above the reference's noise).
 TEST_F(VoxelGpuTest, CornellIndirectEnergyMatchesReference) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     Settings settings;
     settings.specular = 0.0f;
     constexpr int kSize = 96;
@@ -377,7 +447,7 @@ struct DebugGolden {
 class VoxelGoldenGpuTest : public GpuTest, public ::testing::WithParamInterface<DebugGolden> {};
 
 TEST_P(VoxelGoldenGpuTest, CornellView) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     Settings settings;
     settings.voxel.debugLevel = GetParam().level;
     VoxelFrame frame(scene, settings, {128, 128}, GetParam().output);

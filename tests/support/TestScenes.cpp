@@ -1,6 +1,12 @@
 #include "TestScenes.h"
 
+#include "GpuTest.h"
+
+#include "scene/GltfLoader.h"
+#include "scene/SceneDefaults.h"
+
 #include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
 
 #include <cmath>
 
@@ -33,6 +39,16 @@ scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target, float 
     camera.worldFromCamera = glm::inverse(glm::lookAt(eye, target, up));
     camera.yfov = glm::radians(yfovDegrees);
     return camera;
+}
+
+scene::Scene loadCornellBox() {
+    scene::Scene scene;
+    std::string error;
+    std::vector<std::string> warnings;
+    EXPECT_TRUE(scene::loadGltf(sourcePath("assets/cornell_box/cornell_box.gltf"), scene, error,
+            warnings)) << error;
+    scene::addDefaults(scene);
+    return scene;
 }
 
 } // namespace gi::test

@@ -15,4 +15,8 @@ void addPrimitive(scene::Scene& scene, scene::Primitive primitive);
 [[nodiscard]] scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target,
         float yfovDegrees);
 
+// assets/cornell_box/cornell_box.gltf with the scene defaults added; a load error fails the
+// current test.
+[[nodiscard]] scene::Scene loadCornellBox();
+
 } // namespace gi::test

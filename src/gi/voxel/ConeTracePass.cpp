@@ -45,6 +45,7 @@ void ConeTracePass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.textures.albedo.id());
     glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.textures.normal.id());
+    glBindTextureUnit(BIND_TEX_VOXEL_PYRAMID, in.textures.pyramid.id());
     in.scene.drawAll(mProgram.id(), true);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);

@@ -1,6 +1,7 @@
 // Edge-aware smoothing of the cone-traced indirect irradiance at trace resolution (see
 // shaders/voxel/indirect_filter.comp): a depth-weighted box filter of radius voxel.filter
-// texels that, with the per-pixel cone jitter, averages 16 cone rings per pixel.
+// texels (at voxel.trace_scale 0.5, scaled with the trace scale so it covers the same part of
+// the image) that, with the per-pixel cone jitter, averages 16 cone rings per pixel.
 // Inputs : ConeTracePass output (RGBA16F, rgb = E_ind W/m^2, a = view depth m), VoxelUniforms.
 // Outputs: RGBA16F texture of the same size and meaning.
 #pragma once

@@ -24,6 +24,16 @@ void VoxelTextures::allocate(int v, int l) {
     irradiance = createVolume(GL_RGBA16F, v, l, "voxel/irradiance");
     helper = createVolume(GL_RGBA16F, v, l, "voxel/helper");
     lock = createVolume(GL_R32UI, v, l, "voxel/lock");
+    pyramid = gl::createTexture3D(GL_RGBA16F, glm::ivec3(v / 2), pyramidLevels(), "voxel/pyramid");
+    glTextureParameteri(pyramid.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(pyramid.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
+        glTextureParameteri(pyramid.id(), wrap, GL_CLAMP_TO_EDGE);
+    }
+}
+
+int VoxelTextures::pyramidLevels() const {
+    return gl::fullMipCount(resolution / 2);
 }
 
 void VoxelTextures::clear() const {
@@ -39,7 +49,9 @@ std::vector<gl::MemoryItem> VoxelTextures::memory() const {
             {"voxel/normal", gl::textureBytes(GL_RGBA8_SNORM, size, 1)},
             {"voxel/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/helper", gl::textureBytes(GL_RGBA16F, size, 1)},
-            {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)}};
+            {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)},
+            {"voxel/pyramid",
+                    gl::textureBytes(GL_RGBA16F, glm::ivec3(resolution / 2), pyramidLevels())}};
 }
 
 } // namespace gi::voxel

@@ -2,6 +2,8 @@
 // k. Albedo, irradiance and the per-light helper are RGBA16F; normals RGBA8_SNORM (they only
 // decide whether a voxel faces a cone); the lock is R32UI (spinlock bit + fragment count).
 // 32 bytes per voxel: 3.15 MB at v=32, l=3, under the thesis' 3.46 MB for the same data.
+// Beyond the thesis, a mipmapped RGBA16F pyramid of the coarsest level, (v/2)^3 at mip 0,
+// holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB).
 #pragma once
 
 #include "gl/Objects.h"
@@ -11,14 +13,19 @@
 namespace gi::voxel {
 
 struct VoxelTextures {
-    gl::Texture albedo;       // rgb = mean albedo (linear), a = coverage in [0, 1]
-    gl::Texture normal;       // xyz = mean world-space normal (not normalised at level 0)
+    gl::Texture albedo;       // rgb = mean albedo (linear) x coverage, a = coverage in [0, 1]
+    gl::Texture normal;       // xyz = mean world-space normal (not normalised at level 0),
+                              // w = mean offset of the surface from the voxel centre along
+                              // it, in voxel sizes
     gl::Texture irradiance;   // rgb = sum over lights of E (W/m^2), premultiplied by coverage
     gl::Texture helper;       // rgb = current light's mean E, a = 1 where the light wrote
     gl::Texture lock;         // bit 0 = spinlock, bits 1..31 = values averaged
+    gl::Texture pyramid;      // mip m: coarsest level averaged over 2^(m+1) voxels per axis,
+                              // rgb = rho E x coverage (W/m^2), a = coverage
     int resolution = 0, levels = 0;
 
     void allocate(int v, int l);
+    [[nodiscard]] int pyramidLevels() const;   // log2(v): mip 0 is (v/2)^3, the last 1^3
     void clear() const;
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 };

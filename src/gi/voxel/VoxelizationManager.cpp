@@ -22,7 +22,8 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
     mUniforms = gl::createBuffer(sizeof(shader::VoxelUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT,
             "voxel/uniforms");
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
-           mPropagate.init(shaders, error) && mTrace.init(shaders, error) &&
+           mPropagate.init(shaders, error) && mPyramid.init(shaders, error) &&
+           mTrace.init(shaders, error) &&
            mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
 }
@@ -86,7 +87,12 @@ void VoxelizationManager::writeUniforms() {
     const float boundary = 0.5f * ringAngle;
     const float central = std::sin(boundary) * std::sin(boundary);
     u.traceWeights = glm::vec4(central, (1.0f - central) / 8.0f, std::cos(ringAngle), std::sin(ringAngle));
-    u.smoothing = glm::vec4(float(mSettings.filterRadius), mSettings.jitter ? 1.0f : 0.0f, 0.0f, 0.0f);
+    // voxel.filter is in texels of the half-resolution trace; other trace scales scale it, so
+    // the filter smooths the same part of the image and a finer trace only adds detail.
+    const float filterTexels = mSettings.filterRadius > 0
+            ? std::max(std::round(float(mSettings.filterRadius) * mSettings.traceScale / 0.5f), 1.0f)
+            : 0.0f;
+    u.smoothing = glm::vec4(filterTexels, mSettings.jitter ? 1.0f : 0.0f, 0.0f, 0.0f);
     const int coarsest = mVolume.levels() - 1;
     const float rasterPixel = mVolume.extent(coarsest) / float(mSettings.resolution * mSettings.multiplier);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
@@ -148,6 +154,7 @@ void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profi
             {mTextures}, profiler);
 
     mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
+    mPyramid.execute({mUniforms, levelSetter()}, mTextures, profiler);
 
     const glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));

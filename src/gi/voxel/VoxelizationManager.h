@@ -10,6 +10,7 @@
 #include "gi/voxel/IndirectFilterPass.h"
 #include "gi/voxel/InjectPass.h"
 #include "gi/voxel/PropagatePass.h"
+#include "gi/voxel/RadiancePyramidPass.h"
 #include "gi/voxel/VoxelDebugViewPass.h"
 #include "gi/voxel/VoxelTextures.h"
 #include "gi/voxel/VoxelizePass.h"
@@ -56,6 +57,7 @@ private:
     VoxelizePass mVoxelize;
     InjectPass mInject;
     PropagatePass mPropagate;
+    RadiancePyramidPass mPyramid;
     ConeTracePass mTrace;
     IndirectFilterPass mFilter;
     VoxelDebugViewPass mDebugView;
