@@ -78,8 +78,8 @@ Left as they are, and visible in the table:
 - On the single triangle, both GPU modes read 1.14x the path tracer's mean. At 32x32 the
   triangle's edges cover partial pixels: the rasterizer counts pixel centres, while the path
   tracer averages over each pixel.
-- The 64-light runs take 30 s in the GPU modes: 64 cube shadow maps and 384 injection
-  views per frame.
+- The 64-light runs are the slowest in the GPU modes: 12 s on a quiet machine, 30 s under
+  load. Each frame renders 64 cube shadow maps and 384 injection views.
 
 Monotone convergence (issue item 2) has one test per mode. Atlas samples:
 `AtlasReferenceGpuTest.AreaEstimatorErrorDoesNotGrowWithSamples`. Reference paths per pixel:
