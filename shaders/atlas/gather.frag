@@ -1,19 +1,27 @@
 // Atlas gather (thesis 4.6, eq. 9), one fragment per atlas texel: the receiver x reads N
-// sample texels y of the atlas at the Hammersley points (rotated by the set's offset), skips
-// empty texels and pairs that do not face each other, and adds the sender's direct radiance
-// L(y). Two estimators of E_ind(x) = integral of L(y) cos(theta_x) cos(theta_y) / r^2 dA(y):
-//   ATLAS_ESTIMATOR_AREA      sum L(y) cos(theta_x) cos(theta_y) / max(r^2, a(y)) * a(y)
-//                             * R^2 / N, with a(y) the surface area the sample texel stands
-//                             for (the position layer's w). The N points are uniform over the
-//                             R^2 texels, so each texel has probability 1/R^2 and stands for
-//                             a(y) of the surface: R^2/N * sum f(y) a(y) estimates the area
-//                             integral. Clamping r^2 at a(y) (one texel's area) bounds the
-//                             1/r^2 singularity of texels next to the receiver.
-//   ATLAS_ESTIMATOR_MERZ2010  sum L(y) cos(theta_x) * 2 pi / N: the thesis' weighting, which
-//                             treats atlas points as uniform hemisphere directions (kept for
-//                             comparison; it does not converge to the integral above).
-// The final pass multiplies E_ind by rho/pi. Only texels whose centre lies on the surface
-// (a(y) > 0) are senders; texels written by the conservative draw are receivers only.
+// sample texels y, skips pairs that do not face each other, and adds the sender's direct
+// radiance L(y). Two estimators of
+// E_ind(x) = integral of L(y) cos(theta_x) cos(theta_y) / r^2 dA(y):
+//   ATLAS_ESTIMATOR_AREA      the area form, importance-sampled by the power each texel sends:
+//                             AtlasSenderSamplingPass draws texel y with probability
+//                             p(y) = a(y) mean(L(y)) / P (a(y): the surface area the texel
+//                             stands for, the position layer's w; P: the sum over all texels),
+//                             so 1/N sum L(y) cos cos / r^2 a(y) / p(y)
+//                             = P/N sum L(y) / mean(L(y)) cos(theta_x) cos(theta_y) / r^2
+//                             estimates the integral (texels that send nothing are never drawn
+//                             and add nothing to it). One point per stratum of equal power, the
+//                             point within the stratum picked per receiver and set. r^2 is
+//                             clamped at (2 texel edges)^2 (sampling.z): texels next to the
+//                             receiver are not points, and their 1/r^2 spikes would dominate
+//                             the error (Cornell box at 2048 samples: relative RMSE 0.52 with
+//                             a one-texel clamp, 0.32 with two, for 0.2% less energy).
+//   ATLAS_ESTIMATOR_MERZ2010  sum L(y) cos(theta_x) * 2 pi / N over the Hammersley points of
+//                             the atlas (rotated by the set's offset, the same for every
+//                             receiver; points on empty texels count as zero): the thesis'
+//                             weighting, which treats atlas points as uniform hemisphere
+//                             directions (kept for comparison; it does not converge to the
+//                             integral above).
+// The final pass multiplies E_ind by rho/pi. Texels with a(y) > 0 are senders.
 // Double-sided senders send to both sides; a double-sided receiver keeps the mean of both
 // sides' irradiance (the atlas has one value per surface point). With VISIBILITY_VOXEL each
 // pair is weighted by the voxel occupancy's transmittance (voxel_visibility.glsl).
@@ -28,6 +36,23 @@ layout(binding = BIND_TEX_ATLAS_NORMAL) uniform sampler2D atlasNormal;
 layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
 layout(binding = BIND_TEX_ATLAS_SAMPLES) uniform sampler2D atlasSamples;
 
+layout(std430, binding = BIND_SSBO_ATLAS_SENDER_ROWS) readonly buffer SenderRows {
+    float rowPower[];
+};
+layout(std430, binding = BIND_SSBO_ATLAS_SENDER_POOL) readonly buffer SenderPool {
+    uint pool[];
+};
+
+// Integer hash (Wellons' lowbias32) for the per-receiver choice of points.
+uint hash(uint v) {
+    v ^= v >> 16;
+    v *= 0x7feb352du;
+    v ^= v >> 15;
+    v *= 0x846ca68bu;
+    v ^= v >> 16;
+    return v;
+}
+
 layout(location = 0) out vec4 outSum;
 
 void main() {
@@ -40,10 +65,21 @@ void main() {
     int resolution = atlas.size.x;
     int count = atlas.size.y;
     bool area = atlas.size.z == ATLAS_ESTIMATOR_AREA;
+    // The receiver's pick among each stratum's points changes with the set (sampling.y differs
+    // between rotated sets), so its own estimate converges as sets accumulate.
+    uint receiver = hash(uint(texel.y * resolution + texel.x) ^ floatBitsToUint(atlas.sampling.y));
     vec3 sum = vec3(0.0);
     for (int i = 0; i < count; ++i) {
-        vec2 u = fract(texelFetch(atlasSamples, ivec2(i, 0), 0).xy + atlas.sampling.xy);
-        ivec2 t = min(ivec2(u * float(resolution)), ivec2(resolution - 1));
+        ivec2 t;
+        if (area) {
+            uint k = hash(receiver + uint(i)) % uint(ATLAS_POOL_STRIDE);
+            uint sender = pool[uint(i) * uint(ATLAS_POOL_STRIDE) + k];
+            if (sender == ~0u) continue;
+            t = ivec2(int(sender % uint(resolution)), int(sender / uint(resolution)));
+        } else {
+            vec2 u = fract(texelFetch(atlasSamples, ivec2(i, 0), 0).xy + atlas.sampling.xy);
+            t = min(ivec2(u * float(resolution)), ivec2(resolution - 1));
+        }
         vec4 y = texelFetch(atlasPosition, t, 0);
         if (y.w <= 0.0) continue;
         vec3 d = y.xyz - x;
@@ -57,12 +93,23 @@ void main() {
         if (senderNormal.w > 0.5) cosY = abs(cosY);
         if (cosX <= 0.0 || cosY <= 0.0) continue;
         vec3 radiance = texelFetch(atlasDirect, t, 0).rgb;
+        vec3 contribution;
+        if (area) {
+            // Drawn with probability a(y) mean(L(y)) / P: the weight is L / mean(L) times the
+            // geometry term, and P multiplies the sum below.
+            float power = dot(radiance, vec3(1.0 / 3.0));
+            if (!(power > 0.0) || isinf(power)) continue;
+            contribution = radiance / power * (cosX * cosY / max(r2, atlas.sampling.z));
+        } else {
+            contribution = radiance * cosX;
+        }
 #ifdef VISIBILITY_VOXEL
         vec3 receiverSide = receiverTwoSided && dot(nx, w) < 0.0 ? -nx : nx;
         vec3 senderSide = dot(senderNormal.xyz, w) > 0.0 ? -senderNormal.xyz : senderNormal.xyz;
-        radiance *= voxelTransmittance(x, receiverSide, y.xyz, senderSide);
+        contribution *= voxelTransmittance(x, receiverSide, y.xyz, senderSide);
 #endif
-        sum += area ? radiance * (cosX * cosY / max(r2, y.w) * y.w) : radiance * cosX;
+        sum += contribution;
     }
-    outSum = vec4(sum * atlas.sampling.z, 1.0);
+    float scale = area ? rowPower[resolution - 1] : atlas.sampling.z;
+    outSum = vec4(sum * scale, 1.0);
 }

@@ -4,11 +4,14 @@
 //            every light with the forward pass's conventions and shadow maps (Lambert only;
 //            the specular term is not part of what a diffuse surface sends on),
 //   normal   unit normal, w = 1 for double-sided materials,
-//   position world position; w = the surface area this texel stands for when the gather
-//            samples it, |dP/dx x dP/dy| (exact for the planar triangle: in atlas space one
-//            pixel step is one texel), written by the exact draw only,
+//   position world position; w = 0 (the SAMPLE_AREA draw adds the area, below),
 //   albedo   rho.
 // Double-sided surfaces hold one value per point: each light lights the side it faces.
+// SAMPLE_AREA (a third draw, conservative, additive blending into position.w only): each
+// triangle adds the world area of its part inside the texel square (the triangle clipped to
+// the square, times the triangle's world area per texel^2), so w is the surface area the texel
+// stands for as a gather sample and the texels' w add up to the scene's surface area at any
+// resolution, charts smaller than a texel included.
 #include "../common/frame.glsl"
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
@@ -28,11 +31,88 @@ in AtlasVertex {
 #ifdef CONSERVATIVE
 flat in vec4 texelBounds;
 #endif
+#ifdef SAMPLE_AREA
+flat in vec4 triangleAB;
+flat in vec4 triangleC;
+
+// Area (texel^2) of the triangle (a, b, c) inside the square [lo, lo + 1]^2, by Green's
+// theorem over the boundary of the intersection (both convex, counter-clockwise): the parts
+// of the triangle's edges inside the square (Liang-Barsky) and the parts of the square's edges
+// inside the triangle each add cross(start, end) / 2. In coordinates relative to the square
+// (float keeps slivers' areas there), only its right and top edges have a non-zero cross
+// product (1 for the whole edge). Fixed work per texel, no arrays.
+float clippedArea(vec2 a, vec2 b, vec2 c, vec2 lo) {
+    vec2 v[3] = vec2[3](a - lo, b - lo, c - lo);
+    float twiceSigned = (v[1].x - v[0].x) * (v[2].y - v[0].y) -
+                        (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    if (twiceSigned < 0.0) {
+        vec2 t = v[1];
+        v[1] = v[2];
+        v[2] = t;
+    }
+    float twice = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        vec2 p = v[i], d = v[i == 2 ? 0 : i + 1] - p;
+        // p + t d inside [0,1]^2 for t in [t0, t1].
+        float t0 = 0.0, t1 = 1.0;
+        for (int axis = 0; axis < 2; ++axis) {
+            if (d[axis] == 0.0) {
+                if (p[axis] < 0.0 || p[axis] > 1.0) t1 = -1.0;
+            } else {
+                float ta = -p[axis] / d[axis], tb = (1.0 - p[axis]) / d[axis];
+                t0 = max(t0, min(ta, tb));
+                t1 = min(t1, max(ta, tb));
+            }
+        }
+        if (t1 > t0) twice += (p.x * d.y - p.y * d.x) * (t1 - t0);
+    }
+    // The square's right edge (1,0)->(1,1) and top edge (1,1)->(0,1) inside the triangle.
+    for (int side = 0; side < 2; ++side) {
+        vec2 s0 = side == 0 ? vec2(1.0, 0.0) : vec2(1.0, 1.0);
+        vec2 s1 = side == 0 ? vec2(1.0, 1.0) : vec2(0.0, 1.0);
+        float t0 = 0.0, t1 = 1.0;
+        for (int i = 0; i < 3; ++i) {
+            vec2 p = v[i], e = v[i == 2 ? 0 : i + 1] - p;
+            float f0 = e.x * (s0.y - p.y) - e.y * (s0.x - p.x);
+            float f1 = e.x * (s1.y - p.y) - e.y * (s1.x - p.x);
+            // Strictly inside: a square edge along a triangle edge is counted once, as part
+            // of the triangle's edge above.
+            if (f0 <= 0.0 && f1 <= 0.0) {
+                t1 = -1.0;
+            } else if (f0 <= 0.0) {
+                t0 = max(t0, f0 / (f0 - f1));
+            } else if (f1 <= 0.0) {
+                t1 = min(t1, f0 / (f0 - f1));
+            }
+        }
+        if (t1 > t0) twice += t1 - t0;
+    }
+    return clamp(0.5 * twice, 0.0, min(1.0, 0.5 * abs(twiceSigned)));
+}
+#endif
 
 layout(location = 0) out vec4 outDirect;
 layout(location = 1) out vec4 outNormal;
 layout(location = 2) out vec4 outPosition;
 layout(location = 3) out vec4 outAlbedo;
+
+#ifdef SAMPLE_AREA
+
+void main() {
+    GpuMaterial m = materials[drawMaterial];
+    // Only cut-outs need the base colour (the same test as the other draws, at the texel
+    // centre).
+    if (m.flags.z == ALPHA_MASK &&
+            materialCutOut(m, materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color).a)) {
+        discard;
+    }
+    float inside =
+            clippedArea(triangleAB.xy, triangleAB.zw, triangleC.xy, floor(gl_FragCoord.xy));
+    if (inside <= 0.0) discard;
+    outPosition = vec4(0.0, 0.0, 0.0, inside * triangleC.z);
+}
+
+#else
 
 void main() {
 #ifdef CONSERVATIVE
@@ -40,10 +120,6 @@ void main() {
     bool outside = any(greaterThan(texelMin, texelBounds.zw)) ||
                    any(lessThan(texelMax, texelBounds.xy));
     if (outside) discard;
-    float sampleArea = 0.0;
-#else
-    // Derivatives before any discard (they need the whole 2x2 quad).
-    float sampleArea = length(cross(dFdx(vin.position), dFdy(vin.position)));
 #endif
     GpuMaterial m = materials[drawMaterial];
     vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
@@ -66,6 +142,8 @@ void main() {
     vec3 radiance = baseColor.rgb / PI * e + materialEmission(m, vin.texcoord0);
     outDirect = vec4(radiance, 1.0);
     outNormal = vec4(n, doubleSided ? 1.0 : 0.0);
-    outPosition = vec4(vin.position, sampleArea);
+    outPosition = vec4(vin.position, 0.0);
     outAlbedo = vec4(baseColor.rgb, 1.0);
 }
+
+#endif

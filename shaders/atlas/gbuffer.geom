@@ -5,6 +5,8 @@
 // extrapolated linearly over the triangle's plane (barycentric coordinates outside [0,1]),
 // and the fragment stage discards texels outside the original triangle's bounding box, which
 // the enlarged corners overshoot at acute angles.
+// With SAMPLE_AREA the fragment stage also gets the original triangle (texel units) and its
+// world area per texel^2, to add up the surface area inside each texel (gbuffer.frag).
 #include "atlas_common.glsl"
 
 layout(triangles) in;
@@ -29,6 +31,10 @@ out AtlasVertex {
 } vout;
 
 flat out vec4 texelBounds;   // xy = min, zw = max corner of the triangle (texels)
+#ifdef SAMPLE_AREA
+flat out vec4 triangleAB;    // xy = corner 0, zw = corner 1 of the triangle (texels)
+flat out vec4 triangleC;     // xy = corner 2 (texels), z = world area per texel^2 (m^2), w unused
+#endif
 
 void main() {
     float resolution = float(atlas.size.x);
@@ -47,6 +53,11 @@ void main() {
         line[i] = vec3(n, dot(n, p[i]) + 0.5 * (abs(n.x) + abs(n.y)));
     }
     vec2 lo = min(p[0], min(p[1], p[2])), hi = max(p[0], max(p[1], p[2]));
+#ifdef SAMPLE_AREA
+    float worldArea = 0.5 * length(cross(vin[1].position - vin[0].position,
+                                         vin[2].position - vin[0].position));
+    float areaPerTexel = worldArea / (0.5 * abs(area));
+#endif
     for (int i = 0; i < 3; ++i) {
         // Corner i is where the lines of its two edges (i-1 and i) meet.
         vec3 a = line[(i + 2) % 3], b = line[i];
@@ -64,6 +75,10 @@ void main() {
         vout.color = w0 * vin[0].color + w1 * vin[1].color + w2 * vin[2].color;
         vout.doubleSided = vin[0].doubleSided;
         texelBounds = vec4(lo, hi);
+#ifdef SAMPLE_AREA
+        triangleAB = vec4(p[0], p[1]);
+        triangleC = vec4(p[2], areaPerTexel, 0.0);
+#endif
         gl_Position = vec4(q / resolution * 2.0 - 1.0, gl_in[i].gl_Position.zw);
         EmitVertex();
     }

@@ -15,6 +15,14 @@
 #define BIND_SSBO_LIGHTS            0   // GpuLight[], every light of the scene
 #define BIND_SSBO_MATERIALS         1   // GpuMaterial[], indexed by the draw's material
 #define BIND_SSBO_SHADOWS           2   // GpuShadow[], one per light, same index as GpuLight
+#define BIND_SSBO_ATLAS_SENDER_ROWS 3   // float[R]: prefix sums over atlas rows of the texels'
+                                        // sender weights a(y) mean(L(y)) (W/sr); the last is
+                                        // their total P
+#define BIND_SSBO_ATLAS_SENDER_BLOCKS 4 // float[R x ceil(R / ATLAS_SENDER_BLOCK)]: per row, the
+                                        // prefix sums of the weights at each block's end (W/sr)
+#define BIND_SSBO_ATLAS_SENDER_POOL 5   // uint[N x ATLAS_POOL_STRIDE]: the area estimator's
+                                        // sender texels (y R + x) of the current sample set,
+                                        // ATLAS_POOL_STRIDE per stratum; ~0u = none
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -40,8 +48,8 @@
                                         // rho/pi * E_dir + L_emitted (W/(m^2 sr)), a = coverage
 #define BIND_TEX_ATLAS_NORMAL       9   // rgba16f, xyz = unit normal, w = 1 if double-sided
 #define BIND_TEX_ATLAS_POSITION     10  // rgba32f, xyz = world position (m), w = surface area the
-                                        // texel stands for as a gather sample (m^2); 0 marks
-                                        // texels written only by conservative rasterisation
+                                        // texel stands for as a gather sample (m^2): the area
+                                        // of the triangles inside the texel square
 #define BIND_TEX_ATLAS_ALBEDO       11  // rgba16f, rgb = albedo rho (linear), a = coverage
 #define BIND_TEX_ATLAS_SAMPLES      12  // rg32f, N x 1 Hammersley points in [0,1)^2
 #define BIND_TEX_ATLAS_SUMS         13  // rgba32f, gather sums over every sample set so far,
@@ -69,6 +77,9 @@
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
 #define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
 
+#define ATLAS_SENDER_BLOCK          16  // texels per block of the sender table's row prefix sums
+#define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
+#define ATLAS_SENDER_LOCAL_SIZE     64  // work-group size of atlas/sender_sampling
 #define ATLAS_ESTIMATOR_AREA        0   // L cos cos / r^2 x sample area: the rendering equation
 #define ATLAS_ESTIMATOR_MERZ2010    1   // the thesis' eq. 9: L cos(theta_x) x 2 pi / N
 #define ATLAS_VISIBILITY_NONE       0   // senders are never occluded (the thesis)
@@ -187,8 +198,9 @@ struct AtlasUniforms {                  // std140
                                         // N in the current set, z = ATLAS_ESTIMATOR_*,
                                         // w = ATLAS_VIEW_* shown by the debug view
     vec4 sampling;                      // xy = Cranley-Patterson offset of the current set,
-                                        // z = estimator constant (area: R^2 texels per unit
-                                        // square, merz2010: 2 pi), w = 1 / samples accumulated
+                                        // z = estimator constant (area: the smallest r^2 its
+                                        // 1/r^2 uses, (2 texel edges)^2 in m^2; merz2010:
+                                        // 2 pi), w = 1 / samples accumulated
     vec4 dilation;                      // x = dilation radius (texels), yzw = unused
 };
 

@@ -147,8 +147,8 @@ class AtlasGpuTest : public GpuTest {};
 
 // Every texel whose centre lies on a triangle holds that triangle's world position at the
 // centre (within half a texel of the CPU's parameterisation; in practice float rounding),
-// their sample areas add up to the scene's surface area, and every texel a triangle touches
-// is written (conservative draw) and has a lit value (dilation) around it.
+// the texels' sample areas add up to the scene's surface area, and every texel a triangle
+// touches is written (conservative draw) and has a lit value (dilation) around it.
 TEST_F(AtlasGpuTest, TexelsRoundTripToWorldPositions) {
     const scene::Scene scene = loadCornell();
     AtlasFrame frame(scene, atlasSettings(256, 16));
@@ -183,9 +183,10 @@ TEST_F(AtlasGpuTest, TexelsRoundTripToWorldPositions) {
     ASSERT_GT(exact, 10000);
     EXPECT_EQ(missing, 0) << "texel centres on a triangle that the exact draw did not write";
     EXPECT_LE(worst, 0.5 * atlas.texelSize) << "Probe: farthest texel from its CPU position, m";
-    // Centre sampling counts each texel of a chart's border as a whole or not at all: the sum
-    // matches the area to within the border's share (~1% at 256^2 for the Cornell walls).
-    EXPECT_NEAR(areaSum, atlas.surfaceArea, 0.02 * atlas.surfaceArea);
+    // Each texel holds the area of the triangles' parts inside it (clipped exactly), so the
+    // sum is the surface area up to float rounding (measured: a relative difference under
+    // 1e-6 at 256^2).
+    EXPECT_NEAR(areaSum, atlas.surfaceArea, 1e-3 * atlas.surfaceArea);
 
     // Conservative coverage: every texel a triangle's area meets (separating-axis test) is
     // written, and every neighbour of such a texel has a lit value (dilation).
@@ -336,14 +337,15 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
 // surface point is the same whether or not the red wall is in view. The lit atlas is computed
 // without the camera: bit-identical between the two views. The pixel showing one floor point
 // 12 cm from the red wall agrees between the classic view and a view straight down on it
-// that does not show the wall, and it stays redder than the mirror point by the green wall.
+// that does not show the wall, and the point stays redder than the mirror point by the green
+// wall.
 TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     const scene::Scene scene = loadCornell();
     const glm::vec3 nearRed(0.12f, 0.0f, -0.03f), nearGreen(0.556f - 0.12f, 0.0f, -0.03f);
     const scene::Camera withoutWall =
             lookAtCamera(nearRed + glm::vec3(0.0f, 0.3f, 0.0f), nearRed, 20.0f);
     const glm::ivec2 size(64, 64);
-    AtlasFrame a(scene, atlasSettings(256, 256)), b(scene, atlasSettings(256, 256));
+    AtlasFrame a(scene, atlasSettings(256, 1024)), b(scene, atlasSettings(256, 1024));
     a.render(size, render::OutputComponent::Indirect);
     b.render(size, render::OutputComponent::Indirect, 1, withoutWall);
     EXPECT_TRUE(a.lit() == b.lit()) << "the lit atlas depends on the camera";
@@ -366,16 +368,28 @@ TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     ASSERT_TRUE(pixelOnPlaneY(viewB, size.x, size.y, 0, size.y / 2, 0.0f, leftEdge));
     ASSERT_GT(std::min(leftEdge.x, 0.24f - leftEdge.x), 0.02f)
             << "the second view must not show the red wall";
-    const glm::vec3 ia = a.image().at(pa.x, pa.y), ib = b.image().at(pb.x, pb.y),
-                    ig = a.image().at(pg.x, pg.y);
+    const render::Image imageA = a.image(), imageB = b.image();
+    const glm::vec3 ia = imageA.at(pa.x, pa.y), ib = imageB.at(pb.x, pb.y);
     ASSERT_GT(ia.r, 0.0f);
     // The two pixels' footprints on the floor differ by millimetres: E changes by well under
     // 5% over that distance.
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(ib[c], ia[c], 0.05f * ia[c]) << "channel " << c;
-    // Colour bleeding: the red wall 12 cm away shifts red/green by far more than 10% against
-    // the mirror point 12 cm from the green wall.
-    EXPECT_GT(ib.r / ib.g, 1.1f * ig.r / ig.g)
-            << "near red " << ib.r << "," << ib.g << " near green " << ig.r << "," << ig.g;
+    // Colour bleeding, on the mean of the 3x3 pixels around each point (each texel's estimate
+    // has its own noise, ~5% at 256 samples): red/green near the red wall exceeds red/green at
+    // the mirror point near the green wall. Measured on llvmpipe with 1024 samples: 1.049-1.058
+    // over three rotations, and 1.06 after 8192 samples. The path tracer's 1.34 is larger
+    // because the short block hides much of the box from the point near the green wall, and
+    // the atlas without visibility does not see it; the bound leaves room for the noise.
+    auto meanAround = [&](glm::ivec2 p) {
+        glm::vec3 sum(0.0f);
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) sum += imageA.at(p.x + dx, p.y + dy);
+        return sum / 9.0f;
+    };
+    const glm::vec3 red = meanAround(pa), green = meanAround(pg);
+    EXPECT_GT(red.r / red.g, 1.03f * green.r / green.g)
+            << "near red " << red.r << "," << red.g << " near green " << green.r << ","
+            << green.g;
 }
 
 // Mean E_ind over the Cornell floor's texels after `frames` frames of `samples` each.
@@ -407,24 +421,31 @@ glm::dvec3 floorMean(const scene::Scene& scene, int samples, int frames) {
 }
 
 // The area estimator converges: the mean E_ind over the Cornell floor moves little as the
-// sample count grows 16 -> 64 -> 256, and 256 agrees with 4096 (16 rotated sets of 256). The
-// light is moved from 1 cm under the ceiling to the middle of the box for this test: there,
-// about 80% of the light the ceiling reflects comes from a spot of 5 cm radius above the lamp
-// (0.3% of the atlas), which 16-256 uniformly spread samples hit or miss by chance, so the
-// floor mean swings by a factor of two between those counts (measured: 0.34, 0.82, 0.51,
-// 0.87 at 16, 64, 256, 1024 and 2.5 W/m^2 at 4096). Away from every surface the integrand is
-// smooth and the estimator settles quickly (measured: 0.922, 0.855, 0.865, 0.872 W/m^2).
+// sample count grows 16 -> 64 -> 256, and 256 agrees with 4096 (16 rotated sets of 256), with
+// the light where the scene has it, 1 cm under the ceiling, and moved to the middle of the
+// box. Under the ceiling about 80% of the light the ceiling reflects comes from a spot of
+// 5 cm radius above the lamp (0.3% of the atlas): points spread uniformly over the atlas hit
+// or missed it by chance and the floor mean swung by a factor of two between counts (0.34,
+// 0.82, 0.51, 0.87 at 16, 64, 256, 1024 and 2.5 W/m^2 at 4096); senders drawn by the power
+// they send sample it as often as it matters. Measured on llvmpipe (red): 1.287, 1.281,
+// 1.277, 1.279 W/m^2 under the ceiling, 0.874, 0.866, 0.869, 0.867 W/m^2 mid-box.
 TEST_F(AtlasGpuTest, FloorMeanIsStableAsSamplesGrow) {
-    scene::Scene scene = loadCornell();
-    scene.lights[0].position = glm::vec3(0.278f, 0.42f, -0.15f);
-    const glm::dvec3 m16 = floorMean(scene, 16, 1), m64 = floorMean(scene, 64, 1),
-                     m256 = floorMean(scene, 256, 1), m4096 = floorMean(scene, 256, 16);
-    for (int c = 0; c < 3; ++c) {
-        // Quasi-Monte Carlo error of the mean over ~5000 floor texels: the bounds are about
-        // twice the differences measured on llvmpipe.
-        EXPECT_NEAR(m16[c], m256[c], 0.12 * m256[c]) << "16 vs 256, channel " << c;
-        EXPECT_NEAR(m64[c], m256[c], 0.04 * m256[c]) << "64 vs 256, channel " << c;
-        EXPECT_NEAR(m256[c], m4096[c], 0.02 * m4096[c]) << "256 vs 4096, channel " << c;
+    for (const bool midBox : {false, true}) {
+        scene::Scene scene = loadCornell();
+        if (midBox) scene.lights[0].position = glm::vec3(0.278f, 0.42f, -0.15f);
+        const glm::dvec3 m16 = floorMean(scene, 16, 1), m64 = floorMean(scene, 64, 1),
+                         m256 = floorMean(scene, 256, 1), m4096 = floorMean(scene, 256, 16);
+        for (int c = 0; c < 3; ++c) {
+            // Monte Carlo error of the mean over ~5000 floor texels, each with its own
+            // senders: the largest differences measured on llvmpipe are 2%, 0.4% and 0.2%;
+            // the bounds are about twice those.
+            EXPECT_NEAR(m16[c], m256[c], 0.04 * m256[c])
+                    << "16 vs 256, channel " << c << (midBox ? ", light mid-box" : "");
+            EXPECT_NEAR(m64[c], m256[c], 0.01 * m256[c])
+                    << "64 vs 256, channel " << c << (midBox ? ", light mid-box" : "");
+            EXPECT_NEAR(m256[c], m4096[c], 0.005 * m4096[c])
+                    << "256 vs 4096, channel " << c << (midBox ? ", light mid-box" : "");
+        }
     }
 }
 

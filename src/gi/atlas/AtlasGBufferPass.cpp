@@ -17,7 +17,14 @@ bool AtlasGBufferPass::init(gl::ShaderLibrary& shaders, std::string& error) {
                                                   {GL_FRAGMENT_SHADER, "atlas/gbuffer.frag"}},
                                           {"CONSERVATIVE"}},
             error);
-    return bool(mConservative);
+    if (!mConservative) return false;
+    mArea = shaders.build({"atlas/gbuffer_area",
+                                  {{GL_VERTEX_SHADER, "atlas/gbuffer.vert"},
+                                          {GL_GEOMETRY_SHADER, "atlas/gbuffer.geom"},
+                                          {GL_FRAGMENT_SHADER, "atlas/gbuffer.frag"}},
+                                  {"CONSERVATIVE", "SAMPLE_AREA"}},
+            error);
+    return bool(mArea);
 }
 
 bool AtlasGBufferPass::attach(const AtlasTextures& textures, std::string& error) {
@@ -64,8 +71,21 @@ void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProf
     in.scene.drawAll(mExact.id(), false, &in.geometry.vertexArray());
     glUseProgram(mConservative.id());
     in.scene.drawAll(mConservative.id(), false, &in.geometry.vertexArray());
-    glUseProgram(0);
+    // Sample areas: every triangle adds its area inside each texel it touches to position.w.
     glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glColorMaski(2, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    glEnablei(GL_BLEND, 2);
+    glBlendEquationi(2, GL_FUNC_ADD);
+    glBlendFunci(2, GL_ONE, GL_ONE);
+    glUseProgram(mArea.id());
+    in.scene.drawAll(mArea.id(), false, &in.geometry.vertexArray());
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

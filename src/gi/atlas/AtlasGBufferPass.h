@@ -1,10 +1,12 @@
 // Atlas G-buffer (thesis 4.4): the scene drawn with every vertex at its atlas coordinate into
 // one framebuffer with four targets — direct radiance (Lambert, shadowed, every light), normal,
-// world position with the texel's sample area, albedo; alpha 0 = no surface. Two draws: an
-// exact one (texel centres inside a triangle; these texels are the gather's senders and carry
-// their surface area) and a conservative one (geometry shader, gbuffer.geom) that fills every
-// further texel a triangle touches, so bilinear lookups inside a chart never read an empty
-// texel. A depth buffer keeps the exact draw's texels.
+// world position with the texel's sample area, albedo; alpha 0 = no surface. Three draws: an
+// exact one (texel centres inside a triangle), a conservative one (geometry shader,
+// gbuffer.geom) that fills every further texel a triangle touches, so bilinear lookups inside
+// a chart never read an empty texel (a depth buffer keeps the exact draw's texels), and a
+// conservative one that adds each triangle's world area inside each texel to position.w: the
+// texel's sample area for the gather, so the texels' areas add up to the surface area even
+// where charts or triangles are smaller than a texel.
 // Inputs : GpuScene (draws, materials, lights), AtlasGeometry, ShadowPass (maps already
 //          rendered), frame UBO (light count, shadows on/off), AtlasUniforms (resolution).
 // Outputs: AtlasTextures direct, normal, position, albedo.
@@ -39,7 +41,7 @@ public:
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
-    gl::ProgramRef mExact, mConservative;
+    gl::ProgramRef mExact, mConservative, mArea;
     gl::Framebuffer mFramebuffer;
     gl::Texture mDepth;
     int mResolution = 0;

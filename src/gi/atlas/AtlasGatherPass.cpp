@@ -49,6 +49,7 @@ void AtlasGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, in.textures.normal.id());
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     glBindTextureUnit(BIND_TEX_ATLAS_SAMPLES, in.samples.id());
+    in.senderSampling.bind();
     if (in.occupancy) {
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());

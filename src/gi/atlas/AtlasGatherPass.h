@@ -1,15 +1,18 @@
-// Atlas gather (thesis 4.6): one fragment per atlas texel reads N sample texels at the
-// Hammersley points and adds the senders' direct light (estimator and visibility in
-// shaders/atlas/gather.frag). The result is added to running sums by blending, so successive
-// rotated sample sets accumulate (progressive mode); clear() starts over.
+// Atlas gather (thesis 4.6): one fragment per atlas texel reads N sample texels (the area
+// estimator's from AtlasSenderSamplingPass, the thesis' at the Hammersley points) and adds the
+// senders' direct light (estimator and visibility in shaders/atlas/gather.frag). The result is
+// added to running sums by blending, so successive rotated sample sets accumulate (progressive
+// mode); clear() starts over.
 // Inputs : AtlasTextures direct, normal, position; the Hammersley texture (RG32F, N x 1);
-//          AtlasUniforms (R, N, estimator, rotation offset, estimator constant); optionally a
-//          voxel occupancy volume for visibility.
+//          the sender sampling table and point pool; AtlasUniforms (R, N, estimator,
+//          rotation offset, estimator constant); optionally a voxel occupancy volume for
+//          visibility.
 // Outputs: AtlasTextures sums (RGBA32F): rgb += estimator constant x sum over this set,
 //          a = 1 where a receiver was written.
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/atlas/AtlasSenderSamplingPass.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
@@ -23,6 +26,7 @@ public:
         const gl::Texture& samples;
         const gl::Buffer& atlasUniforms;
         const OccupancyVolume* occupancy; // nullptr: no visibility test
+        const AtlasSenderSamplingPass& senderSampling; // executed for this set (area estimator)
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);

@@ -43,9 +43,9 @@ bool AtlasGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::s
     mMesh = flattenScene(scene);
     mUniforms = gl::createBuffer(
             sizeof(shader::AtlasUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "atlas/uniforms");
-    return mGBuffer.init(shaders, error) && mGather.init(shaders, error) &&
-            mDilate.init(shaders, error) && mResolve.init(shaders, error) &&
-            mDebugView.init(shaders, error);
+    return mGBuffer.init(shaders, error) && mSenderSampling.init(shaders, error) &&
+            mGather.init(shaders, error) && mDilate.init(shaders, error) &&
+            mResolve.init(shaders, error) && mDebugView.init(shaders, error);
 }
 
 bool AtlasGi::buildAtlasGeometry(std::string& error) {
@@ -131,9 +131,10 @@ void AtlasGi::writeUniforms() {
     u.size.x = mSettings.resolution;
     u.size.y = mSettings.samples;
     u.size.z = mSettings.estimator;
-    const double r = mSettings.resolution;
-    u.sampling.z =
-            mSettings.estimator == ATLAS_ESTIMATOR_AREA ? float(r * r) : 2.0f * glm::pi<float>();
+    // The area estimator's 1/r^2 stops growing within two texel edges of the receiver.
+    u.sampling.z = mSettings.estimator == ATLAS_ESTIMATOR_AREA
+                           ? float(4.0 * mAtlas.texelSize * mAtlas.texelSize)
+                           : 2.0f * glm::pi<float>();
     u.sampling.w = mSamplesDone > 0 ? 1.0f / float(mSamplesDone) : 0.0f;
     u.dilation = glm::vec4(float((mSettings.gutter + 1) / 2), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
@@ -169,6 +170,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
         mGBuffer.execute({in.scene, mGeometry, in.shadows, in.frameUniforms, mUniforms},
                 {mTextures}, profiler);
         mGBufferValid = true;
+        mSenderTableValid = false;
         mSamplesDone = 0;
     }
     if (mSamplesDone == 0) mSetIndex = 0;
@@ -182,7 +184,12 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
         mUniformData.sampling.x = offset.x;
         mUniformData.sampling.y = offset.y;
         writeUniforms();
-        mGather.execute({mTextures, mSamples, mUniforms, occupancy}, profiler);
+        if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
+            mSenderSampling.execute(
+                    mTextures, mUniforms, mSettings.samples, !mSenderTableValid, profiler);
+            mSenderTableValid = true;
+        }
+        mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling}, profiler);
         mSamplesDone += mSettings.samples;
         ++mSetIndex;
         writeUniforms();
@@ -217,6 +224,7 @@ std::vector<gl::MemoryItem> AtlasGi::memory() const {
     for (const gl::MemoryItem& item : mGBuffer.memory()) items.push_back(item);
     for (const gl::MemoryItem& item : mGeometry.memory()) items.push_back(item);
     items.push_back({"atlas/samples", gl::textureBytes(GL_RG32F, {mSettings.samples, 1, 1}, 1)});
+    for (const gl::MemoryItem& item : mSenderSampling.memory()) items.push_back(item);
     for (const gl::MemoryItem& item : mResolve.memory()) items.push_back(item);
     return items;
 }

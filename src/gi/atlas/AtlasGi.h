@@ -2,8 +2,10 @@
 // Bildraum"): the indirect light is gathered on an atlas that holds every surface of the
 // scene, so it does not depend on what the camera sees (thesis 3.1). Per frame:
 //   1. atlas G-buffer: direct radiance, normal, position + sample area, albedo (4.4),
-//   2. gather: N Hammersley samples per texel (4.5, 4.6), area-form or thesis weighting,
-//      optional voxel visibility, added to running sums,
+//   2. gather: N samples per texel (4.5, 4.6), area-form or thesis weighting, optional voxel
+//      visibility, added to running sums (the area form draws its senders in proportion to
+//      the power they send, AtlasSenderSamplingPass; the thesis' weighting reads Hammersley
+//      points),
 //   3. normalise and dilate into the gutters -> lit atlas of E_ind (W/m^2),
 //   4. resolve: the lit atlas seen from the camera -> screen-space E_ind (4.7).
 // Progressive mode (the thesis' future work, 5.4): a static scene's G-buffer is built once and
@@ -20,6 +22,7 @@
 #include "gi/atlas/AtlasGatherPass.h"
 #include "gi/atlas/AtlasGeometry.h"
 #include "gi/atlas/AtlasResolvePass.h"
+#include "gi/atlas/AtlasSenderSamplingPass.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/Shared.h"
 
@@ -62,6 +65,7 @@ private:
 
     // What the current G-buffer and sums were computed for.
     bool mGBufferValid = false;
+    bool mSenderTableValid = false; // the sender sampling table matches the G-buffer
     int mSamplesDone = 0;
     std::uint32_t mSetIndex = 0;   // rotated sets accumulated since the last restart
     std::uint32_t mFrameIndex = 0; // frames since configure (non-progressive rotation)
@@ -73,6 +77,7 @@ private:
     bool mShowDebug = false;
 
     AtlasGBufferPass mGBuffer;
+    AtlasSenderSamplingPass mSenderSampling;
     AtlasGatherPass mGather;
     AtlasDilatePass mDilate;
     AtlasResolvePass mResolve;

@@ -1,0 +1,83 @@
+#include "gi/atlas/AtlasSenderSamplingPass.h"
+
+#include "gl/Shared.h"
+
+namespace gi::atlas {
+namespace {
+
+GLuint groupsFor(std::size_t invocations) {
+    return GLuint((invocations + ATLAS_SENDER_LOCAL_SIZE - 1) / ATLAS_SENDER_LOCAL_SIZE);
+}
+
+std::size_t blocksPerRow(int resolution) {
+    return std::size_t((resolution + ATLAS_SENDER_BLOCK - 1) / ATLAS_SENDER_BLOCK);
+}
+
+} // namespace
+
+bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    const auto build = [&](const char* name, const char* step) {
+        return shaders.build({name, {{GL_COMPUTE_SHADER, "atlas/sender_sampling.comp"}}, {step}},
+                error);
+    };
+    mRows = build("atlas/sender_sampling_rows", "STEP_ROWS");
+    if (!mRows) return false;
+    mPrefix = build("atlas/sender_sampling_prefix", "STEP_PREFIX");
+    if (!mPrefix) return false;
+    mPool = build("atlas/sender_sampling_pool", "STEP_POOL");
+    return bool(mPool);
+}
+
+void AtlasSenderSamplingPass::execute(const AtlasTextures& textures,
+        const gl::Buffer& atlasUniforms, int samples, bool table, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "atlas/sender_sampling");
+    const int r = textures.resolution;
+    if (r != mResolution) {
+        mResolution = r;
+        mRowPower = gl::createBuffer(std::size_t(r) * sizeof(float), nullptr, 0,
+                "atlas/sender_sampling_rows");
+        mBlockPower = gl::createBuffer(std::size_t(r) * blocksPerRow(r) * sizeof(float), nullptr,
+                0, "atlas/sender_sampling_blocks");
+        table = true;
+    }
+    if (samples != mSamples) {
+        mSamples = samples;
+        mPoints = gl::createBuffer(std::size_t(samples) * ATLAS_POOL_STRIDE * sizeof(GLuint),
+                nullptr, 0, "atlas/sender_sampling_pool");
+    }
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, atlasUniforms.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, textures.direct.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, textures.position.id());
+    bind();
+    if (table) {
+        glUseProgram(mRows.id());
+        glDispatchCompute(groupsFor(std::size_t(r)), 1, 1);
+        // Consumer: the prefix step reads the row sums.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        glUseProgram(mPrefix.id());
+        glDispatchCompute(1, 1, 1);
+        // Consumer: the pool step reads the prefix sums.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    glUseProgram(mPool.id());
+    glDispatchCompute(groupsFor(std::size_t(samples) * ATLAS_POOL_STRIDE), 1, 1);
+    // Consumer: the gather's fragment shader reads the pool and the total power.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+void AtlasSenderSamplingPass::bind() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_ROWS, mRowPower.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_BLOCKS, mBlockPower.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_POOL, mPoints.id());
+}
+
+std::vector<gl::MemoryItem> AtlasSenderSamplingPass::memory() const {
+    return {{"atlas/sender_sampling_rows", std::size_t(mResolution) * sizeof(float)},
+            {"atlas/sender_sampling_blocks",
+                    std::size_t(mResolution) * blocksPerRow(mResolution) * sizeof(float)},
+            {"atlas/sender_sampling_pool",
+                    std::size_t(mSamples) * ATLAS_POOL_STRIDE * sizeof(GLuint)}};
+}
+
+} // namespace gi::atlas

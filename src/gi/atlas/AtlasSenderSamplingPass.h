@@ -1,0 +1,48 @@
+// Senders of the area estimator (shaders/atlas/sender_sampling.comp), drawn in proportion to
+// the power each atlas texel sends: p(y) = a(y) mean(L(y)) / P, with a(y) the surface area the
+// texel stands for (position.w), L(y) its direct radiance and P the sum over all texels. The
+// gather's estimate P/N sum L(y)/mean(L(y)) cos cos / r^2 is the area form of E_ind (SEEDS.md
+// section 2) importance-sampled: no sample is spent on gutters, empty texels or unlit surfaces,
+// and bright spots (a lamp close to a wall) are sampled as often as the light they send.
+// Uniform points over the atlas spend most samples where nothing is sent (Sponza: 55-80% of
+// the atlas is empty and most of its surface is unlit) and rarely meet small bright spots.
+//  - table (after each G-buffer): per atlas row, prefix sums of a(y) mean(L(y)) at the end of
+//    every ATLAS_SENDER_BLOCK texels, and prefix sums over rows (the last one is P).
+//  - pool (every sample set): N strata of equal power in row-major order, ATLAS_POOL_STRIDE
+//    evenly spaced points in each (shifted by the set's rotation), each turned into the texel
+//    holding it by inverting the prefix sums. A receiver takes one point per stratum, picked by
+//    a hash of the receiver and the stratum: every receiver's set is stratified, and
+//    neighbouring receivers see different senders, so an unlucky set of points becomes noise
+//    between texels instead of one error shared by the whole image.
+// Inputs : AtlasTextures direct (rgb = L, a > 0: written) and position (w = a(y), m^2);
+//          AtlasUniforms (R, N, sampling.x = the set's rotation).
+// Outputs: the buffers at BIND_SSBO_ATLAS_SENDER_ROWS / _BLOCKS / _POOL (shared.h), bound by
+//          bind() for the gather.
+#pragma once
+
+#include "gi/atlas/AtlasTextures.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+
+#include <vector>
+
+namespace gi::atlas {
+
+class AtlasSenderSamplingPass {
+public:
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    // Rebuilds the power table from the G-buffer when `table` is set, then the point pool of
+    // the current set.
+    void execute(const AtlasTextures& textures, const gl::Buffer& atlasUniforms, int samples,
+            bool table, gl::GpuProfiler& profiler);
+    // Binds the table and the pool for a consumer (the gather).
+    void bind() const;
+    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+
+private:
+    gl::ProgramRef mRows, mPrefix, mPool;
+    gl::Buffer mRowPower, mBlockPower, mPoints;
+    int mResolution = 0, mSamples = 0;
+};
+
+} // namespace gi::atlas
