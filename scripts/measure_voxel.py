@@ -26,7 +26,9 @@ def render(scene, settings, frames, width=1280, height=720, extra=(), out_png=No
         timings = os.path.join(tmp, "t.json")
         cmd = [BIN, "render", scene, "--out", out_png or os.path.join(tmp, "o.png"),
                "--width", str(width), "--height", str(height), "--timings", timings,
-               "--set", f"render.frames={frames}", "--set", "render.warmup=2"]
+               "--set", f"render.frames={frames}", "--set", "render.warmup=2",
+               # Every pass every frame, as in the thesis (static caching would skip them).
+               "--set", "voxel.cache=0"]
         for key, value in settings.items():
             cmd += ["--set", f"{key}={value}"]
         cmd += list(extra)

@@ -104,6 +104,10 @@ int runBench(const Config& config) {
 
     Settings base = config.settings;
     base.specular = 0.0f;
+    // The sweep compares what each method costs per frame when everything moves: voxel GI
+    // redoes every pass each frame, as the thesis does (docs/results-adaptive.md measures
+    // what static caching saves).
+    base.voxel.cache = false;
     if (base.reference.spp == Settings{}.reference.spp) {
         base.reference.spp = config.quick ? 64 : 256;
     }

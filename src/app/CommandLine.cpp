@@ -270,10 +270,16 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
             config.gl = *provider;
             config.glExplicit = true;
         } else if (arg == "--set") {
-            if (!allowed(arg, {Command::Render, Command::View, Command::Bench}) || !(v = value(arg))) {
+            if (!allowed(arg, {Command::Render, Command::View, Command::Bench, Command::Info}) || !(v = value(arg))) {
                 return std::nullopt;
             }
             if (!applySetting(config.settings, *v, error)) return std::nullopt;
+        } else if (arg == "--move") {
+            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
+            if (!parseVec3(*v, config.cameraMove) || glm::length(config.cameraMove) > 1e6f) {
+                error = "--move '" + *v + "': expected DX,DY,DZ in metres per frame";
+                return std::nullopt;
+            }
         } else if (arg == "--time") {
             if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
             if (!parseFloat(*v, config.animationTime) || config.animationTime < 0.0f ||
@@ -334,6 +340,8 @@ std::string usage(Command command) {
                "        [--width W --height H] [--camera N | --camera ex,ey,ez,tx,ty,tz,fovy_deg]\n"
                "        [--light KIND:...] [--gl egl|osmesa] [--set key=value ...] [--timings F.json]\n"
                "        [--time SECONDS]   (pose of the scene's glTF animations; default 0)\n"
+               "        [--move DX,DY,DZ]  (the camera travels this far each frame, warm-up included:\n"
+               "                            timings of a moving camera)\n"
                "\n"
                "Renders one frame without a display (EGL surfaceless; OSMesa if EGL is missing\n"
                "and --gl was not given) to an sRGB PNG and optionally a linear HDR image.\n"
@@ -346,8 +354,11 @@ std::string usage(Command command) {
                "\n"
                "--set keys (default, range):\n" + settingsHelp();
     case Command::Info:
-        return "usage: voxatlas info SCENE\n"
-               "Prints counts, bounds, lights, cameras and the memory plan of a glTF scene.\n";
+        return "usage: voxatlas info SCENE [--set key=value ...]\n"
+               "Prints counts, bounds, lights, cameras and the memory plan of a glTF scene: the\n"
+               "scene's own buffers, and the GI resources the settings give it (voxel cascade,\n"
+               "atlas, shadow maps). --set render.plan=adaptive shows the plan sized from the\n"
+               "scene; --set voxel.resolution=64 etc. change either plan.\n";
     case Command::Bench:
         return "usage: voxatlas bench [--scene SCENE] [--quick] [--out-dir DIR] [--gl egl|osmesa]\n"
                "        [--set key=value ...]\n"
@@ -359,13 +370,13 @@ std::string usage(Command command) {
                "(default docs/results). --quick: smaller images, 3 timed frames, 64 spp\n"
                "reference, no 2048^2 / 400-sample atlas; the full sweep: 7 frames, 256 spp.\n"
                "--set changes the base settings under every configuration\n"
-               "(material.specular is always 0).\n";
+               "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n";
     default:
         return "usage: voxatlas [view] [SCENE] [--width W --height H] [--camera ...] [--light ...]\n"
                "        [--frames N] [--screenshot F.png] [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"
                "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
                "       voxatlas bench [--scene ...] [--quick] [--out-dir DIR]\n"
-               "       voxatlas info SCENE\n"
+               "       voxatlas info SCENE [--set key=value ...]\n"
                "SCENE defaults to the Cornell box. Without a display, view renders a headless\n"
                "screenshot instead.\n";
     }

@@ -1,6 +1,7 @@
 #include "app/InfoCommand.h"
 
 #include "app/SceneSetup.h"
+#include "render/ResourcePlan.h"
 #include "scene/Animation.h"
 #include "scene/GpuScene.h"
 
@@ -101,6 +102,12 @@ int runInfo(const Config& config) {
     std::printf("  scene/indices  %10.2f MiB\n", mebibytes(indexBytes));
     std::printf("  scene/textures %10.2f MiB\n", mebibytes(textureBytes));
     std::printf("  total          %10.2f MiB\n", mebibytes(vertexBytes + indexBytes + textureBytes));
+    // The GI resources at the given settings (--set render.plan=adaptive for the scene-derived
+    // plan), from the scene's first camera.
+    const glm::vec3 eye = scene.cameras.empty() ? scene.bounds.center()
+                                                : glm::vec3(scene.cameras.front().worldFromCamera[3]);
+    std::printf("%s", render::describePlan(
+            render::planResources(scene, scene.lights, config.settings, eye)).c_str());
     return 0;
 }
 

@@ -11,6 +11,8 @@
 #include "reference/ReferenceCache.h"
 #include "render/ImageIO.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cstdio>
 #include <filesystem>
 
@@ -100,13 +102,20 @@ int runRender(const Config& config) {
     if (!renderer.setMode(config.mode, error)) return fail(2, error);
 
     gl::GpuProfiler profiler;
+    // --move: each frame sees the camera one step further along the same view direction.
+    auto step = [&] {
+        camera.eye += config.cameraMove;
+        camera.view = camera.view * glm::translate(glm::mat4(1.0f), -config.cameraMove);
+    };
     for (int frame = 0; frame < config.settings.warmupFrames; ++frame) {
         renderer.render(camera, {width, height}, config.output, profiler);
+        step();
     }
     profiler.clearSamples();
     for (int frame = 0; frame < config.settings.frames; ++frame) {
         renderer.render(camera, {width, height}, config.output, profiler);
         profiler.collect();
+        if (frame + 1 < config.settings.frames) step();
     }
     profiler.flush();
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {

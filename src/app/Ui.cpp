@@ -142,6 +142,9 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
         passTable(frame.timings);
         ImGui::Separator();
         memoryTable(frame.memory);
+        if (!frame.plan.empty() && ImGui::CollapsingHeader("resource plan")) {
+            ImGui::TextUnformatted(frame.plan.c_str());
+        }
         ImGui::Separator();
         changed = settingsWidgets(settings);
         if (!frame.notice.empty()) {

@@ -35,6 +35,7 @@ struct UiFrame {
     std::vector<gl::MemoryItem> memory;            // FrameRenderer::memory()
     std::string mode;                              // "direct", ...
     std::string giStatus;                          // GiTechnique::status(), may be empty
+    std::string plan;                              // render::describePlan() of the renderer
     std::string output;                            // "final", "direct", "indirect"
     std::string camera;                            // e.g. "1/2 Camera" or "free"
     std::size_t triangles = 0;

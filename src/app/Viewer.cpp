@@ -366,6 +366,7 @@ UiFrame Viewer::uiFrame(double frameMs) const {
     frame.memory = mRenderer.memory();
     frame.mode = modeName(mMode);
     if (const GiTechnique* technique = mRenderer.technique()) frame.giStatus = technique->status();
+    frame.plan = render::describePlan(mRenderer.plan());
     frame.output = outputName(mOutput);
     frame.camera = cameraLabel();
     frame.triangles = mScene->triangleCount();

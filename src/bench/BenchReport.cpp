@@ -236,7 +236,9 @@ std::string benchMarkdown(const std::vector<BenchMeasurement>& measurements,
             << "than on a quiet machine.\n";
     }
     out
-        << "`material.specular=0` everywhere (the reference is Lambertian). "
+        << "`material.specular=0` everywhere (the reference is Lambertian); `voxel.cache=0`, so "
+        << "voxel GI redoes every pass every frame (docs/results-adaptive.md measures static "
+        << "caching). "
         << "Absolute milliseconds on llvmpipe are not GPU figures: compare the ratios "
         << "(`x base` = frame time / the mode's base configuration, `x direct` = frame time / "
         << "the direct-light-only frame, both in the same run).\n"

@@ -32,6 +32,7 @@ enum class DebugView {
 struct OccupancyVolume {
     const gl::Texture& coverage;       // sampler3D rgba16f at BIND_TEX_VOXEL_ALBEDO, a = coverage
     const gl::Buffer& voxelUniforms;   // VoxelUniforms (std140) at BIND_UBO_VOXEL
+    std::uint64_t version = 0;         // changes whenever the occupancy is recomputed
 };
 
 struct GiFrameInputs {

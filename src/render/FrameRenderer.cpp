@@ -95,26 +95,56 @@ bool FrameRenderer::shadowMapsFit(const std::vector<scene::Light>& lights,
             ShadowPass::memoryFor(lights, settings), error);
 }
 
+void FrameRenderer::replan(const Settings& requested) {
+    const scene::Scene& scene = *mSceneDescription;
+    const glm::vec3 eye = scene.cameras.empty() ? scene.bounds.center()
+                                                : glm::vec3(scene.cameras.front().worldFromCamera[3]);
+    mRequested = requested;
+    mPlan = planResources(scene, mAllLights, requested, eye);
+    mSettings = applyPlan(requested, mPlan);
+}
+
+std::vector<scene::Light> FrameRenderer::gpuLights() const {
+    return plannedLights(mAllLights, mPlan);
+}
+
 bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
         gl::ShaderLibrary& shaders, std::string& error) {
-    mSettings = settings;
     mShaders = &shaders;
     mSceneDescription = &scene;
-    if (!shadowMapsFit(scene.lights, settings.shadow, error)) return false;
+    mAllLights = scene.lights;
+    replan(settings);
+    mLights = gpuLights();
+    if (!shadowMapsFit(mLights, mSettings.shadow, error)) return false;
     mScene = std::make_unique<scene::GpuScene>(scene);
+    if (mLights != scene.lights) mScene->setLights(mLights);
     mFrameUniforms = gl::createBuffer(sizeof(shader::FrameUniforms), nullptr,
             GL_DYNAMIC_STORAGE_BIT, "frame/uniforms");
     if (!mShadows.init(shaders, error) || !mForward.init(shaders, error)) return false;
-    mLights = scene.lights;
     mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
     return true;
 }
 
-bool FrameRenderer::setSettings(const Settings& settings, std::string& error) {
-    const bool shadowsChanged = !(settings.shadow == mSettings.shadow);
-    if (shadowsChanged && !shadowMapsFit(mLights, settings.shadow, error)) return false;
-    if (mGi && !mGi->configure(settings, error)) return false;
+bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
+    const Settings previous = mSettings, previousRequest = mRequested;
+    const ResourcePlan previousPlan = mPlan;
+    replan(requested);
+    const Settings settings = mSettings;
+    mSettings = previous;
+    const std::vector<scene::Light> lights = gpuLights();
+    const bool lightsChanged = lights != mLights;
+    const bool shadowsChanged = !(settings.shadow == mSettings.shadow) || lightsChanged;
+    if ((shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) ||
+            (mGi && !mGi->configure(settings, error))) {
+        mPlan = previousPlan;
+        mRequested = previousRequest;
+        return false;
+    }
     mSettings = settings;
+    if (lightsChanged) {
+        mLights = lights;
+        mScene->setLights(mLights);
+    }
     if (shadowsChanged) mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
     return true;
 }
@@ -124,6 +154,8 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const CameraView& 
     Settings occupancySettings = mSettings;
     occupancySettings.voxel.sceneCentred = true;
     occupancySettings.voxel.coverageMaxAxis = true;
+    // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
+    if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
     std::string error;
     if (!mOccupancy) {
         mOccupancy = std::make_unique<voxel::VoxelizationManager>();
@@ -164,9 +196,19 @@ bool FrameRenderer::setMode(GiMode mode, std::string& error) {
 }
 
 void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
-    mLights = lights;
-    mScene->setLights(lights);
+    mAllLights = lights;
+    replan(mRequested);
+    mLights = gpuLights();
+    mScene->setLights(mLights);
     mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
+}
+
+void FrameRenderer::setPose(const scene::Scene& scene) {
+    mScene->updateDynamic(scene);
+    if (mScene->geometryVersion() != mShadowGeometry) {
+        mShadowGeometry = mScene->geometryVersion();
+        mShadows.invalidate();
+    }
 }
 
 void FrameRenderer::resizeTargets(glm::ivec2 size) {

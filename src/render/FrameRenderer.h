@@ -7,6 +7,7 @@
 #include "gl/ShaderLibrary.h"
 #include "render/CameraView.h"
 #include "render/ForwardPass.h"
+#include "render/ResourcePlan.h"
 #include "scene/GpuScene.h"
 #include "render/ShadowPass.h"
 #include "gi/GiTechnique.h"
@@ -55,15 +56,19 @@ public:
             const ShadowSettings& settings, std::string& error);
 
     // Applies settings; false with a message if the active technique cannot honour them.
+    // With render.plan=adaptive the GI sizes come from the scene (render/ResourcePlan.h).
     bool setSettings(const Settings& settings, std::string& error);
+    // The resource plan behind the current settings, and the settings it produced.
+    const ResourcePlan& plan() const { return mPlan; }
+    const Settings& effectiveSettings() const { return mSettings; }
     // Switches the GI technique (Direct = none). Reference is not a GPU mode.
     bool setMode(GiMode mode, std::string& error);
     GiMode mode() const { return mMode; }
     void setLights(const std::vector<scene::Light>& lights);
-    // Uploads the current pose of `scene`'s animated instances (scene/Animation.h). Voxel GI
-    // revoxelizes every frame and so follows them; the atlas keeps the geometry it was built
-    // from (its charts and G-buffer are not rebuilt for moving objects).
-    void setPose(const scene::Scene& scene) { mScene->updateDynamic(scene); }
+    // Uploads the current pose of `scene`'s animated instances (scene/Animation.h). Shadow
+    // maps and voxel GI follow them; the atlas keeps the geometry it was built from (its
+    // charts and G-buffer are not rebuilt for moving objects).
+    void setPose(const scene::Scene& scene);
 
     // Renders one frame of `camera` at outputSize x render.supersample.
     void render(const CameraView& camera, glm::ivec2 outputSize, OutputComponent output,
@@ -89,7 +94,15 @@ private:
     void resizeTargets(glm::ivec2 size);
     std::optional<OccupancyVolume> updateOccupancy(const CameraView& camera, gl::GpuProfiler& profiler);
 
-    Settings mSettings;
+    // The plan for `requested` and this scene; mSettings = applyPlan(requested, plan).
+    void replan(const Settings& requested);
+    // The lights the plan keeps for the GPU (shadow maps, injection, shading).
+    std::vector<scene::Light> gpuLights() const;
+
+    Settings mSettings;     // in effect: mRequested with the plan's sizes
+    Settings mRequested;    // as given to init() / setSettings()
+    ResourcePlan mPlan;
+    std::vector<scene::Light> mAllLights;   // as given; mLights are the planned ones
     std::unique_ptr<scene::GpuScene> mScene;
     std::vector<scene::Light> mLights;
     gl::Buffer mFrameUniforms;
@@ -98,6 +111,7 @@ private:
     gl::Framebuffer mFramebuffer;
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;
+    std::uint64_t mShadowGeometry = 0;   // GpuScene::geometryVersion() the maps were drawn for
     GiMode mMode = GiMode::Direct;
     std::unique_ptr<GiTechnique> mGi;
     // Voxel occupancy for the atlas' visibility (atlas.visibility=voxel): a scene-centred

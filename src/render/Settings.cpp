@@ -103,6 +103,10 @@ SettingSpec hidden(SettingSpec spec) {
 
 const std::vector<SettingSpec>& settingSpecs() {
     static const std::vector<SettingSpec> specs = {
+        choiceSetting("render.plan",
+                "GI resources as set (fixed, the thesis' allocation) or sized from the scene "
+                "(adaptive: voxel.size, atlas.texel_size; see `voxatlas info`)",
+                {"fixed", "adaptive"}, [](Settings& s) -> int& { return s.plan; }),
         intSetting("render.supersample", "samples per pixel per axis, box-averaged", 1, 4,
                 [](Settings& s) -> int& { return s.supersample; }),
         intSetting("render.frames", "frames rendered; --timings reports their median", 1, 1000,
@@ -142,6 +146,13 @@ const std::vector<SettingSpec>& settingSpecs() {
                 0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.maxDistance; }),
         floatSetting("voxel.extent", "finest level edge in metres (0 = derived from the scene)", 0.0f,
                 1e6f, [](Settings& s) -> float& { return s.voxel.extent; }),
+        floatSetting("voxel.size",
+                "finest voxel edge in metres for render.plan=adaptive (0 = the scene's shortest "
+                "side / voxel.resolution)",
+                0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.size; }),
+        boolSetting("voxel.clamp_centre",
+                "keep the camera-centred cascade's centre inside the scene's bounds",
+                [](Settings& s) -> bool& { return s.voxel.clampCentre; }),
         boolSetting("voxel.coverage_max_axis",
                 "propagate coverage as the most opaque axis' opacity (walls stay opaque)",
                 [](Settings& s) -> bool& { return s.voxel.coverageMaxAxis; }),
@@ -156,6 +167,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.voxel.falloff; }),
         boolSetting("voxel.upsample_depth", "depth-aware upsampling of the traced indirect light",
                 [](Settings& s) -> bool& { return s.voxel.depthUpsample; }),
+        boolSetting("voxel.cache",
+                "voxelize static geometry once per cascade placement and reuse the injected light "
+                "while lights and geometry stay the same (0 = every pass every frame)",
+                [](Settings& s) -> bool& { return s.voxel.cache; }),
         boolSetting("voxel.jitter", "turn the cone ring per pixel in a 4x4 pattern",
                 [](Settings& s) -> bool& { return s.voxel.jitter; }),
         intSetting("voxel.filter",
@@ -166,6 +181,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> int& { return s.voxel.debugLevel; }),
         intSetting("atlas.resolution", "texels per side of the GI atlas", 16, 4096,
                 [](Settings& s) -> int& { return s.atlas.resolution; }),
+        floatSetting("atlas.texel_size",
+                "atlas texel edge in metres for render.plan=adaptive (0 = half the finest voxel)",
+                0.0f, 1e6f, [](Settings& s) -> float& { return s.atlas.texelSize; }),
         intSetting("atlas.samples", "Hammersley samples per atlas texel and set (thesis: 100)", 1,
                 4096, [](Settings& s) -> int& { return s.atlas.samples; }),
         choiceSetting("atlas.estimator",

@@ -32,6 +32,10 @@ struct VoxelSettings {
                                   // opaque axis instead of the thesis' mean
     bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds
                                   // (finest level holding the scene) instead of the camera
+    bool clampCentre = false;     // voxel.clamp_centre: the camera-centred cascade's centre
+                                  // kept inside the scene's bounds (the adaptive plan's choice)
+    float size = 0.0f;            // voxel.size: finest voxel edge (m) of the adaptive plan;
+                                  // 0 = the scene's shortest side / voxel.resolution
     float coneAngle = 45.0f;      // voxel.cone_angle: full aperture of each diffuse cone, degrees
     float stepFactor = 1.0f;      // voxel.step: sample spacing in cone diameters (thesis: 1)
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
@@ -40,12 +44,17 @@ struct VoxelSettings {
     int filterRadius = 2;         // voxel.filter: edge-aware smoothing radius, texels of a
                                   // trace at scale 0.5 (scaled with voxel.trace_scale)
     int debugLevel = 0;           // voxel.debug_level: cascade level shown by debug views
+    bool cache = true;            // voxel.cache: keep the static voxelization and the injected
+                                  // light while their inputs stay the same (0 = every pass
+                                  // every frame, as in the thesis)
     bool operator==(const VoxelSettings&) const = default;
 };
 
 // Texture-atlas GI (SEEDS.md section 2, gi/atlas); samples = 100 is the thesis' setting.
 struct AtlasSettings {
     int resolution = 1024;        // atlas.resolution: texels per side of the atlas
+    float texelSize = 0.0f;       // atlas.texel_size: texel edge (m) of the adaptive plan;
+                                  // 0 = half the plan's finest voxel
     int samples = 100;            // atlas.samples: N, Hammersley points per gather set
     int estimator = 0;            // atlas.estimator: ATLAS_ESTIMATOR_* (0 area, 1 merz2010)
     int visibility = 0;           // atlas.visibility: ATLAS_VISIBILITY_* (0 none, 1 voxel)
@@ -66,8 +75,13 @@ struct ReferenceSettings {
     bool operator==(const ReferenceSettings&) const = default;
 };
 
+// render.plan: where the GI resources' sizes come from (render/ResourcePlan.h).
+enum PlanMode : int { PLAN_FIXED = 0, PLAN_ADAPTIVE = 1 };
+
 struct Settings {
     // Rendering.
+    int plan = PLAN_FIXED;             // render.plan: fixed (the thesis' settings as given) or
+                                       // adaptive (cascades and atlas sized from the scene)
     int supersample = 1;        // render.supersample: pixels averaged per output pixel per axis
     int frames = 1;             // render.frames: frames rendered; timings are their median
     int warmupFrames = 0;       // render.warmup: frames rendered and discarded before timing

@@ -59,7 +59,8 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         const auto base = std::uint32_t(vertices.size());
         appendInstanceVertices(scene, instance, vertices);
         if (instance.dynamic) mDynamicRanges.push_back({k, base, primitive.positions.size()});
-    Draw draw;
+        Draw draw;
+        draw.dynamic = instance.dynamic;
         draw.firstIndex = std::uint32_t(indices.size());
         draw.indexCount = std::uint32_t(primitive.indices.size());
         draw.material = primitive.material >= 0 ? primitive.material : defaultMaterial;
@@ -187,11 +188,15 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
             table.empty() ? nullptr : table.data(), 0, "scene/lights");
 }
 
-void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray) const {
+void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray,
+        DrawSet set) const {
     glBindVertexArray(vertexArray ? vertexArray->id() : mVertexArray.id());
     glBindSampler(BIND_TEX_BASE_COLOR, 0);
     glBindSampler(BIND_TEX_EMISSIVE, 0);
     for (const Draw& draw : mDraws) {
+        if ((set == DrawSet::Static && draw.dynamic) || (set == DrawSet::Dynamic && !draw.dynamic)) {
+            continue;
+        }
         if (cullBackFaces && !draw.doubleSided) glEnable(GL_CULL_FACE);
         else glDisable(GL_CULL_FACE);
         const int baseColor = mBaseColorTexture[std::size_t(draw.material)];

@@ -30,7 +30,11 @@ public:
         int material = 0;               // into the material table (a default material is last)
         bool doubleSided = false;
         bool alphaMasked = false;
+        bool dynamic = false;           // an animated instance (Instance::dynamic)
     };
+    // Which draws drawAll issues: passes that cache static geometry draw it once and the
+    // dynamic draws every frame.
+    enum class DrawSet { All, Static, Dynamic };
 
     explicit GpuScene(const Scene& scene);
 
@@ -53,7 +57,8 @@ public:
     // and sets LOC_DRAW_MATERIAL per draw. `cullBackFaces` culls single-sided draws only.
     // `vertexArray` replaces the scene's own vertex array; it must hold the same triangles in
     // the same order (e.g. the texture atlas' geometry, whose vertices are split at charts).
-    void drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray = nullptr) const;
+    void drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray = nullptr,
+            DrawSet set = DrawSet::All) const;
 
     const gl::Buffer& lightBuffer() const { return mLights; }
     const gl::Buffer& materialBuffer() const { return mMaterials; }

@@ -130,6 +130,7 @@ struct Light {
     float innerConeAngle = 0.0f;         // radians (spot)
     float outerConeAngle = 0.7853982f;   // radians (spot)
     bool isDefault = false;              // added because the scene had no lights
+    bool operator==(const Light&) const = default;
 };
 
 struct Camera {

@@ -141,8 +141,11 @@ void AtlasGi::writeUniforms() {
 }
 
 bool AtlasGi::inputsChanged(const GiFrameInputs& in) {
-    const bool changed = mScene != &in.scene || !sameLights(mLights, in.lights);
+    // Moving instances move their shadows, so the G-buffer's direct light changes.
+    const bool changed = mScene != &in.scene || !sameLights(mLights, in.lights) ||
+                         mGeometryVersion != in.scene.geometryVersion();
     mScene = &in.scene;
+    mGeometryVersion = in.scene.geometryVersion();
     if (changed) mLights = in.lights;
     return changed;
 }
@@ -158,12 +161,13 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                 "this frame has none; senders are not occluded\n");
         mWarnedNoOccupancy = true;
     }
-    // The occupancy cascade follows the camera: visibility changes when it moves.
-    if ((occupancy != nullptr) != mHadOccupancy || (occupancy && in.camera.eye != mOccupancyEye)) {
+    // Visibility changes whenever the occupancy is recomputed (it moved, or geometry did).
+    if ((occupancy != nullptr) != mHadOccupancy ||
+            (occupancy && occupancy->version != mOccupancyVersion)) {
         mSamplesDone = 0;
     }
     mHadOccupancy = occupancy != nullptr;
-    mOccupancyEye = in.camera.eye;
+    mOccupancyVersion = occupancy ? occupancy->version : 0;
 
     if (!mGBufferValid) {
         writeUniforms();

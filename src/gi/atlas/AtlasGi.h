@@ -71,7 +71,8 @@ private:
     std::uint32_t mFrameIndex = 0; // frames since configure (non-progressive rotation)
     std::vector<scene::Light> mLights;
     const scene::GpuScene* mScene = nullptr;
-    glm::vec3 mOccupancyEye{0.0f};
+    std::uint64_t mGeometryVersion = 0;
+    std::uint64_t mOccupancyVersion = 0;
     bool mHadOccupancy = false;
     bool mWarnedNoOccupancy = false;
     bool mShowDebug = false;

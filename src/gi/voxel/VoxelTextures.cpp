@@ -44,14 +44,17 @@ void VoxelTextures::clear() const {
 }
 
 std::vector<gl::MemoryItem> VoxelTextures::memory() const {
-    const glm::ivec3 size(resolution, resolution, resolution * levels);
+    return memoryFor(resolution, levels);
+}
+
+std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l) {
+    const glm::ivec3 size(v, v, v * l);
     return {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/normal", gl::textureBytes(GL_RGBA8_SNORM, size, 1)},
             {"voxel/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/helper", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)},
-            {"voxel/pyramid",
-                    gl::textureBytes(GL_RGBA16F, glm::ivec3(resolution / 2), pyramidLevels())}};
+            {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, glm::ivec3(v / 2), gl::fullMipCount(v / 2))}};
 }
 
 } // namespace gi::voxel

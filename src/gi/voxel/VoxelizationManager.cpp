@@ -57,10 +57,15 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 bytes, error)) {
         return false;
     }
+    if (!mConfigured || !(s == mSettings)) {
+        mContent = Content::None;
+        mStaticCacheValid = false;
+    }
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
                             s.levels != mSettings.levels;
     const bool replace = reallocate || s.extent != mSettings.extent ||
-                         s.sceneCentred != mSettings.sceneCentred;
+                         s.sceneCentred != mSettings.sceneCentred ||
+                         s.clampCentre != mSettings.clampCentre;
     mSettings = s;
     mConfigured = true;
     if (reallocate) mTextures.allocate(s.resolution, s.levels);
@@ -108,35 +113,98 @@ std::function<void(int)> VoxelizationManager::levelSetter() {
 }
 
 void VoxelizationManager::updateOccupancy(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
-    placeAndVoxelize(in, profiler);
-    mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
+    place(in);
     mShowDebug = false;
+    if (contentReusable(in, Content::Occupancy)) {
+        ++mReusedFrames;
+        return;
+    }
+    voxelize(in, profiler);
+    mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
+    rememberContent(in, Content::Occupancy);
 }
 
-void VoxelizationManager::placeAndVoxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+void VoxelizationManager::place(const GiFrameInputs& in) {
     if (mFinestExtent <= 0.0f) {
         mFinestExtent = mSettings.sceneCentred
                 ? CascadeVolume::finestExtentCovering(mSceneBounds)
                 : CascadeVolume::finestExtentFor(mSceneBounds, in.camera.eye, mSettings.levels);
     }
+    bool moved = false;
     if (mVolume.resolution() != mSettings.resolution || mVolume.levels() != mSettings.levels ||
             mVolume.extent(0) != mFinestExtent) {
         mVolume = CascadeVolume(mSettings.resolution, mSettings.levels, mFinestExtent);
+        moved = true;
     }
-    mVolume.placeAround(mSettings.sceneCentred && !mSceneBounds.empty() ? mSceneBounds.center()
-                                                                        : in.camera.eye);
+    glm::vec3 centre = in.camera.eye;
+    if (!mSceneBounds.empty()) {
+        if (mSettings.sceneCentred) centre = mSceneBounds.center();
+        else if (mSettings.clampCentre) centre = glm::clamp(centre, mSceneBounds.min, mSceneBounds.max);
+    }
+    moved |= mVolume.placeAround(centre);
+    if (moved || mContentScene != &in.scene) {
+        mContent = Content::None;
+        mStaticCacheValid = false;
+    }
     writeUniforms();
-    {
-        gl::GpuScope scope(profiler, "voxel/clear");
-        mTextures.clear();
+}
+
+bool VoxelizationManager::contentReusable(const GiFrameInputs& in, Content content) const {
+    // Dynamic geometry moves every frame; lights change what is injected (and the
+    // pre-exposure every radiometric value carries).
+    return mSettings.cache && mContent == content && mContentScene == &in.scene &&
+           !in.scene.hasDynamicGeometry() && mContentGeometry == in.scene.geometryVersion() &&
+           (content == Content::Occupancy || mContentLights == in.lights);
+}
+
+void VoxelizationManager::rememberContent(const GiFrameInputs& in, Content content) {
+    mContent = content;
+    mContentScene = &in.scene;
+    mContentGeometry = in.scene.geometryVersion();
+    mContentLights = in.lights;
+    ++mContentVersion;
+}
+
+void VoxelizationManager::voxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    using DrawSet = scene::GpuScene::DrawSet;
+    const int rasterSize = mSettings.resolution * mSettings.multiplier;
+    const bool split = mSettings.cache && in.scene.hasDynamicGeometry();
+    if (!split) mStaticCache.release();
+    if (split && mStaticCacheValid) {
+        gl::GpuScope scope(profiler, "voxel/restore-static");
+        mStaticCacheValid = mStaticCache.restore(mTextures);
     }
-    mVoxelize.execute({in.scene, mUniforms, mSettings.resolution * mSettings.multiplier},
-            {mTextures}, profiler);
+    if (!split || !mStaticCacheValid) {
+        {
+            gl::GpuScope scope(profiler, "voxel/clear");
+            mTextures.clear();
+        }
+        mVoxelize.execute({in.scene, mUniforms, rasterSize, split ? DrawSet::Static : DrawSet::All},
+                {mTextures}, profiler);
+        if (split) {
+            gl::GpuScope scope(profiler, "voxel/save-static");
+            mStaticCache.save(mTextures);
+            mStaticCacheValid = true;
+        }
+    }
+    if (split) {
+        mVoxelize.execute({in.scene, mUniforms, rasterSize, DrawSet::Dynamic}, {mTextures}, profiler);
+    }
 }
 
 void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
-    placeAndVoxelize(in, profiler);
+    place(in);
+    if (contentReusable(in, Content::Lit)) {
+        ++mReusedFrames;
+    } else {
+        voxelize(in, profiler);
+        injectAndPropagate(in, profiler);
+        rememberContent(in, Content::Lit);
+    }
+    trace(in, profiler);
+}
 
+void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const int injectResolution = mSettings.injectResolution > 0 ? mSettings.injectResolution
                                                                 : mSettings.resolution;
     const std::vector<LightView> views =
@@ -155,7 +223,9 @@ void VoxelizationManager::update(const GiFrameInputs& in, gl::GpuProfiler& profi
 
     mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
     mPyramid.execute({mUniforms, levelSetter()}, mTextures, profiler);
+}
 
+void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
     mTrace.resize(traceSize);
@@ -185,6 +255,7 @@ GiOutputs VoxelizationManager::outputs() const {
 
 std::vector<gl::MemoryItem> VoxelizationManager::memory() const {
     std::vector<gl::MemoryItem> items = mTextures.memory();
+    for (const gl::MemoryItem& item : mStaticCache.memory()) items.push_back(item);
     for (const gl::MemoryItem& item : mTrace.memory()) items.push_back(item);
     if (mSettings.filterRadius > 0) {
         for (const gl::MemoryItem& item : mFilter.memory()) items.push_back(item);

@@ -33,7 +33,7 @@ void VoxelizePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler
     glBindImageTexture(BIND_IMG_VOXEL_NORMAL, out.textures.normal.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA8_SNORM);
     glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, out.textures.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
     glBindImageTexture(BIND_IMG_VOXEL_LOCK, out.textures.lock.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-    in.scene.drawAll(mProgram.id(), false);
+    in.scene.drawAll(mProgram.id(), false, nullptr, in.draws);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

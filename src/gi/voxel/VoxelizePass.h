@@ -19,6 +19,7 @@ public:
         const scene::GpuScene& scene;
         const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140
         int rasterSize;                    // pixels per side: v x voxel.multiplier
+        scene::GpuScene::DrawSet draws = scene::GpuScene::DrawSet::All;
     };
     struct Outputs {
         const VoxelTextures& textures;

@@ -1,0 +1,56 @@
+#include "gi/voxel/StaticVoxelCache.h"
+
+namespace gi::voxel {
+namespace {
+
+void copyVolume(const gl::Texture& from, const gl::Texture& to, int v, int l) {
+    glCopyImageSubData(from.id(), GL_TEXTURE_3D, 0, 0, 0, 0, to.id(), GL_TEXTURE_3D, 0, 0, 0, 0,
+            v, v, v * l);
+}
+
+} // namespace
+
+void StaticVoxelCache::save(const VoxelTextures& t) {
+    if (mResolution != t.resolution || mLevels != t.levels || !mAlbedo) {
+        mResolution = t.resolution;
+        mLevels = t.levels;
+        const glm::ivec3 size(t.resolution, t.resolution, t.resolution * t.levels);
+        mAlbedo = gl::createTexture3D(GL_RGBA16F, size, 1, "voxel/static/albedo");
+        mNormal = gl::createTexture3D(GL_RGBA8_SNORM, size, 1, "voxel/static/normal");
+        mIrradiance = gl::createTexture3D(GL_RGBA16F, size, 1, "voxel/static/irradiance");
+        mLock = gl::createTexture3D(GL_R32UI, size, 1, "voxel/static/lock");
+    }
+    // Copies read what the voxelization's image stores wrote.
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    copyVolume(t.albedo, mAlbedo, mResolution, mLevels);
+    copyVolume(t.normal, mNormal, mResolution, mLevels);
+    copyVolume(t.irradiance, mIrradiance, mResolution, mLevels);
+    copyVolume(t.lock, mLock, mResolution, mLevels);
+}
+
+bool StaticVoxelCache::restore(const VoxelTextures& t) const {
+    if (!mAlbedo || mResolution != t.resolution || mLevels != t.levels) return false;
+    copyVolume(mAlbedo, t.albedo, mResolution, mLevels);
+    copyVolume(mNormal, t.normal, mResolution, mLevels);
+    copyVolume(mIrradiance, t.irradiance, mResolution, mLevels);
+    copyVolume(mLock, t.lock, mResolution, mLevels);
+    // The helper is zero after every injection (inject_finalize.comp) but not after an
+    // occupancy-only update, which never injects; clear it so both paths start alike.
+    glClearTexImage(t.helper.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+    return true;
+}
+
+void StaticVoxelCache::release() {
+    *this = StaticVoxelCache();
+}
+
+std::vector<gl::MemoryItem> StaticVoxelCache::memory() const {
+    if (!mAlbedo) return {};
+    const glm::ivec3 size(mResolution, mResolution, mResolution * mLevels);
+    return {{"voxel/static/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
+            {"voxel/static/normal", gl::textureBytes(GL_RGBA8_SNORM, size, 1)},
+            {"voxel/static/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
+            {"voxel/static/lock", gl::textureBytes(GL_R32UI, size, 1)}};
+}
+
+} // namespace gi::voxel

@@ -1,0 +1,32 @@
+// The voxelization of a scene's static geometry, kept between frames (issue: model only what a
+// scene requires). When a scene has animated instances, its static part is voxelized once per
+// placement of the cascade and saved here; every frame restores it and voxelizes only the
+// dynamic instances on top, before light injection. A copy holds what voxelization writes and
+// injection later changes: albedo, normal, the area sum in irradiance.a and the fragment
+// counts in the lock (so the dynamic fragments continue the same running averages).
+// 24 bytes per voxel, allocated only for scenes with dynamic geometry.
+#pragma once
+
+#include "gi/voxel/VoxelTextures.h"
+#include "gl/Objects.h"
+
+#include <vector>
+
+namespace gi::voxel {
+
+class StaticVoxelCache {
+public:
+    // Copies the voxelization in `textures` into the cache (allocated to match on first use).
+    void save(const VoxelTextures& textures);
+    // Writes the saved voxelization back into `textures`; true if the cache matches its size.
+    bool restore(const VoxelTextures& textures) const;
+    void release();
+    [[nodiscard]] bool allocated() const { return bool(mAlbedo); }
+    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+
+private:
+    gl::Texture mAlbedo, mNormal, mIrradiance, mLock;
+    int mResolution = 0, mLevels = 0;
+};
+
+} // namespace gi::voxel

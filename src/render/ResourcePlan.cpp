@@ -1,0 +1,253 @@
+#include "render/ResourcePlan.h"
+
+#include "gi/atlas/AtlasTextures.h"
+#include "gi/voxel/CascadeVolume.h"
+#include "gi/voxel/VoxelTextures.h"
+#include "render/ShadowPass.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace gi::render {
+namespace {
+
+// A scene is compact when its bounds (with the snapping room finestExtentCovering adds) fit
+// in one level at most this much larger than the planned finest level.
+constexpr float kCompactSlack = 1.25f;
+// Share of the atlas' texels covered by charts, gutters and packing waste left aside.
+constexpr double kAtlasFill = 0.5;
+// Lights below this share of the strongest light's irradiance at the scene's scale.
+constexpr double kLightCutoff = 1e-4;
+
+std::size_t sum(const std::vector<gl::MemoryItem>& items) {
+    std::size_t total = 0;
+    for (const gl::MemoryItem& item : items) total += item.bytes;
+    return total;
+}
+
+float distanceToBox(const glm::vec3& p, const scene::Aabb& box) {
+    return glm::length(glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f)));
+}
+
+double mebibytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+VoxelPlan fixedVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s, const glm::vec3& eye) {
+    VoxelPlan plan;
+    plan.resolution = s.resolution;
+    plan.levels = s.levels;
+    plan.sceneCentred = s.sceneCentred;
+    plan.clampCentre = s.clampCentre;
+    plan.finestExtent = s.extent > 0.0f ? s.extent
+                        : s.sceneCentred ? voxel::CascadeVolume::finestExtentCovering(bounds)
+                                         : voxel::CascadeVolume::finestExtentFor(bounds, eye, s.levels);
+    return plan;
+}
+
+VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
+    VoxelPlan plan;
+    plan.resolution = s.resolution;
+    const float v = float(s.resolution);
+    if (bounds.empty()) {
+        plan.levels = 1;
+        plan.sceneCentred = true;
+        plan.finestExtent = s.size > 0.0f ? s.size * v : 1.0f;
+        return plan;
+    }
+    const glm::vec3 size = bounds.size();
+    const float longest = std::max(size.x, std::max(size.y, size.z));
+    // A flat scene (a floor) has no thickness to size voxels by: use an eighth of its span.
+    const float shortest = std::max(std::min(size.x, std::min(size.y, size.z)), longest / 8.0f);
+    const float finestVoxel = s.size > 0.0f ? s.size : std::max(shortest, 1e-9f) / v;
+    const float finest = finestVoxel * v;
+    const float covering = voxel::CascadeVolume::finestExtentCovering(bounds);
+    if (covering <= kCompactSlack * finest) {
+        plan.levels = 1;
+        plan.sceneCentred = true;
+        plan.finestExtent = covering;
+        return plan;
+    }
+    // The centre stays inside the bounds, so the coarsest level reaches all of them from
+    // anywhere once it spans twice the longest side (with finestExtentFor's snapping slack).
+    const float coarsest = 2.0f * longest * 1.1f;
+    const int maxLevels = voxel::CascadeVolume::kMaxLevels;
+    const int levels = 1 + int(std::ceil(std::log2(coarsest / finest) - 1e-6f));
+    plan.clampCentre = true;
+    if (levels > maxLevels) {
+        plan.levels = maxLevels;
+        plan.finestExtent = coarsest / float(1 << (maxLevels - 1));
+    } else {
+        plan.levels = std::max(levels, 1);
+        plan.finestExtent = finest;
+    }
+    return plan;
+}
+
+} // namespace
+
+std::size_t ResourcePlan::voxelBytes() const { return sum(voxelMemory); }
+std::size_t ResourcePlan::atlasBytes() const { return sum(atlasMemory); }
+std::size_t ResourcePlan::shadowBytes() const { return sum(shadowMemory); }
+
+double sceneSurfaceArea(const scene::Scene& scene) {
+    double area = 0.0;
+    for (const scene::Instance& instance : scene.instances) {
+        const scene::Primitive& p = scene.primitives[std::size_t(instance.primitive)];
+        for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+            const glm::dvec3 a(instance.worldFromLocal * glm::vec4(p.positions[p.indices[t]], 1.0f));
+            const glm::dvec3 b(instance.worldFromLocal * glm::vec4(p.positions[p.indices[t + 1]], 1.0f));
+            const glm::dvec3 c(instance.worldFromLocal * glm::vec4(p.positions[p.indices[t + 2]], 1.0f));
+            area += 0.5 * glm::length(glm::cross(b - a, c - a));
+        }
+    }
+    return area;
+}
+
+std::vector<int> lightsReaching(const std::vector<scene::Light>& lights, const scene::Aabb& bounds,
+        std::vector<std::string>* dropped) {
+    auto drop = [&](const scene::Light& light, std::size_t i, const char* why) {
+        if (dropped) {
+            dropped->push_back((light.name.empty() ? "light " + std::to_string(i) : light.name) +
+                               ": " + why);
+        }
+    };
+    std::vector<int> kept;
+    if (bounds.empty()) {
+        for (std::size_t i = 0; i < lights.size(); ++i) kept.push_back(int(i));
+        return kept;
+    }
+    const glm::vec3 centre = bounds.center();
+    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-9f);
+    auto power = [](const scene::Light& l) {
+        return double(std::max(l.color.r, std::max(l.color.g, l.color.b))) * double(l.intensity);
+    };
+    // The strongest irradiance any light gives at the scene's scale: point and spot lights at
+    // the larger of their distance to the centre and the scene's radius.
+    double strongest = 0.0;
+    for (const scene::Light& l : lights) {
+        if (l.type == scene::LightType::Directional) {
+            strongest = std::max(strongest, power(l));
+        } else {
+            const double d = std::max(glm::length(l.position - centre), radius);
+            strongest = std::max(strongest, power(l) / (d * d));
+        }
+    }
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const scene::Light& l = lights[i];
+        if (!(power(l) > 0.0)) {
+            drop(l, i, "emits nothing");
+            continue;
+        }
+        if (l.type != scene::LightType::Directional) {
+            const float d = distanceToBox(l.position, bounds);
+            if (l.type == scene::LightType::Spot && d > 0.0f) {
+                const glm::vec3 toCentre = centre - l.position;
+                const float distance = glm::length(toCentre);
+                const float halfAngle = distance > radius ? std::asin(radius / distance)
+                                                          : glm::pi<float>();
+                const float angle = std::acos(std::clamp(
+                        glm::dot(glm::normalize(toCentre), glm::normalize(l.direction)), -1.0f, 1.0f));
+                if (angle - halfAngle > l.outerConeAngle) {
+                    drop(l, i, "its cone misses the scene");
+                    continue;
+                }
+            }
+            if (d > 0.0f && power(l) / (double(d) * double(d)) < kLightCutoff * strongest) {
+                drop(l, i, "under 1e-4 of the strongest light's irradiance on the scene");
+                continue;
+            }
+        }
+        kept.push_back(int(i));
+    }
+    return kept;
+}
+
+ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::Light>& lights,
+        const Settings& settings, const glm::vec3& eye) {
+    ResourcePlan plan;
+    plan.mode = settings.plan;
+    plan.surfaceArea = sceneSurfaceArea(scene);
+    if (settings.plan == PLAN_ADAPTIVE) {
+        plan.voxel = adaptiveVoxelPlan(scene.bounds, settings.voxel);
+        const double texel = settings.atlas.texelSize > 0.0f
+                ? double(settings.atlas.texelSize)
+                : 0.5 * double(plan.voxel.voxelSize(0));
+        const double side = std::sqrt(plan.surfaceArea / kAtlasFill) / texel;
+        const int rounded = int(std::ceil(std::min(side, 1e6) / 64.0)) * 64;
+        plan.atlasResolution = std::clamp(rounded, 64, 4096);
+        plan.lights = lightsReaching(lights, scene.bounds, &plan.droppedLights);
+    } else {
+        plan.voxel = fixedVoxelPlan(scene.bounds, settings.voxel, eye);
+        plan.atlasResolution = settings.atlas.resolution;
+        for (std::size_t i = 0; i < lights.size(); ++i) plan.lights.push_back(int(i));
+    }
+    plan.atlasTexelSize = plan.atlasResolution > 0
+            ? std::sqrt(plan.surfaceArea / kAtlasFill) / double(plan.atlasResolution)
+            : 0.0;
+    plan.voxelMemory = voxel::VoxelTextures::memoryFor(plan.voxel.resolution, plan.voxel.levels);
+    bool dynamic = false;
+    for (const scene::Instance& instance : scene.instances) dynamic |= instance.dynamic;
+    if (dynamic && settings.voxel.cache) {
+        // StaticVoxelCache: albedo, normal, irradiance, lock copies.
+        const glm::ivec3 size(plan.voxel.resolution, plan.voxel.resolution,
+                plan.voxel.resolution * plan.voxel.levels);
+        plan.voxelMemory.push_back({"voxel/static", gl::textureBytes(GL_RGBA16F, size, 1) * 2 +
+                                                            gl::textureBytes(GL_RGBA8_SNORM, size, 1) +
+                                                            gl::textureBytes(GL_R32UI, size, 1)});
+    }
+    plan.atlasMemory = atlas::AtlasTextures::memoryFor(plan.atlasResolution);
+    plan.shadowMemory = ShadowPass::memoryFor(plannedLights(lights, plan), settings.shadow);
+    return plan;
+}
+
+Settings applyPlan(const Settings& settings, const ResourcePlan& plan) {
+    if (plan.mode != PLAN_ADAPTIVE) return settings;
+    Settings s = settings;
+    s.voxel.levels = plan.voxel.levels;
+    s.voxel.extent = plan.voxel.finestExtent;
+    s.voxel.sceneCentred = plan.voxel.sceneCentred;
+    s.voxel.clampCentre = plan.voxel.clampCentre;
+    s.atlas.resolution = plan.atlasResolution;
+    return s;
+}
+
+std::vector<scene::Light> plannedLights(const std::vector<scene::Light>& lights,
+        const ResourcePlan& plan) {
+    std::vector<scene::Light> kept;
+    for (const int i : plan.lights) {
+        if (i >= 0 && std::size_t(i) < lights.size()) kept.push_back(lights[std::size_t(i)]);
+    }
+    return kept;
+}
+
+std::string describePlan(const ResourcePlan& plan) {
+    char line[256];
+    std::string text;
+    std::snprintf(line, sizeof line, "plan       %s\n",
+            plan.mode == PLAN_ADAPTIVE ? "adaptive (render.plan=adaptive)"
+                                       : "fixed (render.plan=fixed: the settings as given)");
+    text += line;
+    const VoxelPlan& v = plan.voxel;
+    std::snprintf(line, sizeof line,
+            "  voxel    %d^3 x %d level%s, %s, finest voxel %.4g m, coarsest level %.4g m: %.2f MiB\n",
+            v.resolution, v.levels, v.levels == 1 ? "" : "s",
+            v.sceneCentred ? "centred on the scene"
+                           : (v.clampCentre ? "centred on the camera (kept inside the scene)"
+                                            : "centred on the camera"),
+            double(v.voxelSize(0)), double(v.finestExtent * float(1 << (v.levels - 1))),
+            mebibytes(plan.voxelBytes()));
+    text += line;
+    std::snprintf(line, sizeof line,
+            "  atlas    %d^2 texels over %.4g m^2 of surface (about %.3g m per texel): %.2f MiB\n",
+            plan.atlasResolution, plan.surfaceArea, plan.atlasTexelSize, mebibytes(plan.atlasBytes()));
+    text += line;
+    std::snprintf(line, sizeof line, "  lights   %zu with shadow maps and injection: %.2f MiB\n",
+            plan.lights.size(), mebibytes(plan.shadowBytes()));
+    text += line;
+    for (const std::string& why : plan.droppedLights) text += "           left out: " + why + "\n";
+    return text;
+}
+
+} // namespace gi::render

@@ -1,0 +1,70 @@
+// The resource plan on the command line: `info` prints the fixed and the adaptive plan with
+// their bytes; `render --move` times a moving camera (voxel.cache redoes the cascade as it
+// moves); bad values are refused with one line and exit 2.
+#include "Process.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace gi::test {
+namespace {
+
+const std::string kBox = std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box.gltf";
+
+TEST(ResourcePlanCommand, InfoPrintsBothPlans) {
+    const ProcessResult fixed = runVoxatlas({"info", kBox});
+    ASSERT_EQ(fixed.exitCode, 0) << fixed.err;
+    EXPECT_NE(fixed.out.find("plan       fixed"), std::string::npos) << fixed.out;
+    EXPECT_NE(fixed.out.find("voxel    32^3 x 3 levels, centred on the camera"), std::string::npos)
+            << fixed.out;
+    EXPECT_NE(fixed.out.find("atlas    1024^2 texels"), std::string::npos) << fixed.out;
+    const ProcessResult adaptive =
+            runVoxatlas({"info", kBox, "--set", "render.plan=adaptive", "--set", "voxel.resolution=64"});
+    ASSERT_EQ(adaptive.exitCode, 0) << adaptive.err;
+    EXPECT_NE(adaptive.out.find("plan       adaptive"), std::string::npos) << adaptive.out;
+    EXPECT_NE(adaptive.out.find("voxel    64^3 x 1 level, centred on the scene"), std::string::npos)
+            << adaptive.out;
+    EXPECT_NE(adaptive.out.find("lights   1 with shadow maps"), std::string::npos) << adaptive.out;
+}
+
+TEST(ResourcePlanCommand, InfoRefusesABadPlan) {
+    const ProcessResult r = runVoxatlas({"info", kBox, "--set", "render.plan=huge"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("render.plan"), std::string::npos) << r.err;
+}
+
+TEST(ResourcePlanCommand, MovingCameraRevoxelizesOnlyWhenTheCascadeMoves) {
+    const std::string dir = makeTempDir("plan-move");
+    auto voxelizations = [&](const std::string& move, const std::string& cache) {
+        const std::string timings = dir + "/t" + move + cache + ".json";
+        const ProcessResult r = runVoxatlas({"render", kBox, "--mode", "voxel", "--out",
+                dir + "/o.png", "--width", "32", "--height", "32", "--timings", timings, "--move",
+                move, "--set", "render.frames=6", "--set", "voxel.cache=" + cache});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        std::ifstream in(timings);
+        const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+        for (const nlohmann::json& pass : report["passes"]) {
+            if (pass["name"] == "voxel/voxelize") return pass["samples"].get<int>();
+        }
+        return 0;
+    };
+    EXPECT_EQ(voxelizations("0,0,0", "1"), 1) << "a still camera voxelizes once";
+    EXPECT_EQ(voxelizations("0,0,0", "0"), 6) << "without the cache, every frame";
+    // 30 cm per frame: beyond a coarsest voxel (8.5 cm), the cascade moves every frame.
+    EXPECT_EQ(voxelizations("0,0,-0.3", "1"), 6);
+}
+
+TEST(ResourcePlanCommand, RejectsABadMove) {
+    const std::string dir = makeTempDir("plan-move-bad");
+    const ProcessResult r = runVoxatlas({"render", kBox, "--out", dir + "/o.png", "--move", "1,2"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--move '1,2'"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/o.png"));
+}
+
+} // namespace
+} // namespace gi::test

@@ -1,0 +1,88 @@
+// The resource plan (render/ResourcePlan.h) is what the renderer allocates: the voxel bytes
+// `voxatlas info` reports for a plan are the voxel textures FrameRenderer holds in voxel mode,
+// the atlas bytes its atlas layers in atlas mode, and only the active mode holds any.
+#include "GpuTest.h"
+
+#include "gi/voxel/VoxelizationManager.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "render/FrameRenderer.h"
+#include "scene/GltfLoader.h"
+#include "scene/SceneDefaults.h"
+
+#include <gtest/gtest.h>
+
+namespace gi::test {
+namespace {
+
+scene::Scene loadScene(const std::string& path) {
+    scene::Scene scene;
+    std::string error;
+    std::vector<std::string> warnings;
+    EXPECT_TRUE(scene::loadGltf(path, scene, error, warnings)) << error;
+    scene::addDefaults(scene);
+    return scene;
+}
+
+std::size_t bytesWithPrefix(const std::vector<gl::MemoryItem>& items, const std::string& prefix) {
+    std::size_t total = 0;
+    for (const gl::MemoryItem& item : items) {
+        if (item.name.rfind(prefix, 0) == 0) total += item.bytes;
+    }
+    return total;
+}
+
+// Allocates voxel and then atlas GI for `scene` at `settings` and checks both against the plan.
+void expectAllocationMatchesPlan(const scene::Scene& scene, const Settings& settings) {
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    std::string error;
+    ASSERT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
+    const render::ResourcePlan& plan = renderer.plan();
+    EXPECT_EQ(bytesWithPrefix(renderer.memory(), "voxel/"), 0u) << "direct mode holds no GI";
+    ASSERT_TRUE(renderer.setMode(render::GiMode::Voxel, error)) << error;
+    const std::vector<gl::MemoryItem> voxelMemory = renderer.memory();
+    // The trace targets (voxel/trace...) scale with the output, not the plan: compare the
+    // cascade's textures.
+    std::size_t cascade = 0;
+    for (const gl::MemoryItem& item : plan.voxelMemory) cascade += bytesWithPrefix(voxelMemory, item.name);
+    EXPECT_EQ(cascade, plan.voxelBytes());
+    EXPECT_EQ(bytesWithPrefix(voxelMemory, "atlas/"), 0u);
+    const auto* voxels = dynamic_cast<const voxel::VoxelizationManager*>(renderer.technique());
+    ASSERT_NE(voxels, nullptr);
+    EXPECT_EQ(voxels->textures().levels, plan.voxel.levels);
+    EXPECT_EQ(renderer.effectiveSettings().voxel.levels, plan.voxel.levels);
+    ASSERT_TRUE(renderer.setMode(render::GiMode::Atlas, error)) << error;
+    const std::vector<gl::MemoryItem> atlasMemory = renderer.memory();
+    std::size_t layers = 0;
+    for (const gl::MemoryItem& item : plan.atlasMemory) layers += bytesWithPrefix(atlasMemory, item.name);
+    EXPECT_EQ(layers, plan.atlasBytes());
+    EXPECT_EQ(bytesWithPrefix(atlasMemory, "voxel/"), 0u) << "voxel GI released its cascade";
+    EXPECT_EQ(bytesWithPrefix(atlasMemory, "render/shadow/"), plan.shadowBytes());
+}
+
+class ResourcePlanGpuTest : public GpuTest {};
+
+TEST_F(ResourcePlanGpuTest, CornellBoxAllocatesItsPlan) {
+    const scene::Scene box = loadScene(sourcePath("assets/cornell_box/cornell_box.gltf"));
+    Settings adaptive;
+    adaptive.plan = PLAN_ADAPTIVE;
+    adaptive.atlas.cache = false;
+    expectAllocationMatchesPlan(box, adaptive);
+    Settings fixed;
+    fixed.atlas.resolution = 256;
+    fixed.atlas.cache = false;
+    expectAllocationMatchesPlan(box, fixed);
+}
+
+TEST_F(ResourcePlanGpuTest, SponzaAllocatesItsPlan) {
+    const std::string path = sponzaPathOrSkip();
+    if (path.empty()) GTEST_SKIP();
+    const scene::Scene sponza = loadScene(path);
+    Settings adaptive;
+    adaptive.plan = PLAN_ADAPTIVE;
+    expectAllocationMatchesPlan(sponza, adaptive);
+}
+
+} // namespace
+} // namespace gi::test

@@ -1,0 +1,145 @@
+// The resource plan (render/ResourcePlan.h) for the scenes users render: the Cornell box gets
+// one scene-centred level, Sponza a camera-centred cascade reaching all of it; the fixed plan
+// reports the thesis' allocation as given; lights that cannot reach the scene are left out.
+#include "render/ResourcePlan.h"
+#include "scene/GltfLoader.h"
+#include "scene/SceneDefaults.h"
+
+#include "GpuTest.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace gi::render {
+namespace {
+
+scene::Scene load(const std::string& path) {
+    scene::Scene scene;
+    std::string error;
+    std::vector<std::string> warnings;
+    EXPECT_TRUE(scene::loadGltf(path, scene, error, warnings)) << error;
+    scene::addDefaults(scene);
+    return scene;
+}
+
+glm::vec3 startEye(const scene::Scene& scene) {
+    return glm::vec3(scene.cameras.front().worldFromCamera[3]);
+}
+
+Settings adaptive(int resolution) {
+    Settings s;
+    s.plan = PLAN_ADAPTIVE;
+    s.voxel.resolution = resolution;
+    return s;
+}
+
+TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
+    const scene::Scene box = load(test::sourcePath("assets/cornell_box/cornell_box.gltf"));
+    const ResourcePlan plan = planResources(box, box.lights, adaptive(32), startEye(box));
+    EXPECT_EQ(plan.voxel.levels, 1);
+    EXPECT_TRUE(plan.voxel.sceneCentred);
+    // The level holds the whole box (0.56 m) with snapping room, in voxels under 2 cm.
+    EXPECT_GE(plan.voxel.finestExtent, 0.5592f);
+    EXPECT_LT(plan.voxel.voxelSize(0), 0.02f);
+    const std::size_t pyramid = 8u * (16u * 16u * 16u + 8u * 8u * 8u + 4u * 4u * 4u + 2u * 2u * 2u + 1u);
+    EXPECT_EQ(plan.voxelBytes(), 32u * 32u * 32u * 32u + pyramid)
+            << "32 bytes per voxel plus the radiance pyramid of the coarsest level";
+    // The fixed thesis allocation: three camera-centred levels, the finest of which hold only
+    // the air between the camera and the box.
+    Settings fixed;
+    const ResourcePlan thesis = planResources(box, box.lights, fixed, startEye(box));
+    EXPECT_EQ(thesis.voxel.levels, 3);
+    EXPECT_FALSE(thesis.voxel.sceneCentred);
+    EXPECT_GT(thesis.voxel.voxelSize(2), 4.0f * plan.voxel.voxelSize(0))
+            << "the only level holding the box is much coarser than the adaptive one";
+    EXPECT_EQ(thesis.voxelBytes(), 3u * 32u * 32u * 32u * 32u + pyramid);
+    // The atlas: about 1.9 m^2 of surface at half a voxel per texel.
+    EXPECT_NEAR(plan.surfaceArea, 1.9, 0.3);
+    EXPECT_GE(plan.atlasResolution, 128);
+    EXPECT_LE(plan.atlasResolution, 384);
+    EXPECT_EQ(plan.atlasResolution % 64, 0);
+    EXPECT_EQ(thesis.atlasResolution, 1024);
+    EXPECT_EQ(plan.lights.size(), 1u);
+}
+
+TEST(ResourcePlan, SponzaIsACameraCascadeReachingAllOfIt) {
+    const std::string path = test::sponzaPathOrSkip();
+    if (path.empty()) GTEST_SKIP();
+    const scene::Scene sponza = load(path);
+    const ResourcePlan plan = planResources(sponza, sponza.lights, adaptive(32), startEye(sponza));
+    const glm::vec3 size = sponza.bounds.size();
+    const float shortest = std::min(size.x, std::min(size.y, size.z));
+    const float longest = std::max(size.x, std::max(size.y, size.z));
+    EXPECT_FALSE(plan.voxel.sceneCentred);
+    EXPECT_TRUE(plan.voxel.clampCentre);
+    EXPECT_NEAR(plan.voxel.voxelSize(0), shortest / 32.0f, 1e-4f);
+    // The coarsest level reaches the far end from anywhere inside; one level less would not.
+    const float coarsest = plan.voxel.finestExtent * float(1 << (plan.voxel.levels - 1));
+    EXPECT_GE(coarsest, 2.0f * longest);
+    EXPECT_LT(coarsest / 2.0f, 2.0f * longest * 1.1f);
+    EXPECT_EQ(plan.voxel.levels, 4);
+    // More levels than the Cornell box, and a larger atlas for 100x the surface.
+    EXPECT_GT(plan.surfaceArea, 1000.0);
+    EXPECT_GT(plan.atlasResolution, 256);
+    // A finer voxel.size adds levels, never voxels per level.
+    Settings finer = adaptive(32);
+    finer.voxel.size = plan.voxel.voxelSize(0) / 4.0f;
+    const ResourcePlan fine = planResources(sponza, sponza.lights, finer, startEye(sponza));
+    EXPECT_EQ(fine.voxel.levels, plan.voxel.levels + 2);
+    EXPECT_EQ(fine.voxel.resolution, 32);
+}
+
+TEST(ResourcePlan, ApplyWritesThePlanIntoTheSettings) {
+    const scene::Scene box = load(test::sourcePath("assets/cornell_box/cornell_box.gltf"));
+    const Settings requested = adaptive(64);
+    const ResourcePlan plan = planResources(box, box.lights, requested, startEye(box));
+    const Settings s = applyPlan(requested, plan);
+    EXPECT_EQ(s.voxel.levels, 1);
+    EXPECT_TRUE(s.voxel.sceneCentred);
+    EXPECT_FLOAT_EQ(s.voxel.extent, plan.voxel.finestExtent);
+    EXPECT_EQ(s.atlas.resolution, plan.atlasResolution);
+    Settings fixed;
+    fixed.voxel.levels = 5;
+    const Settings unchanged = applyPlan(fixed, planResources(box, box.lights, fixed, startEye(box)));
+    EXPECT_EQ(unchanged.voxel.levels, 5);
+    EXPECT_EQ(unchanged.voxel.extent, 0.0f) << "fixed plans keep deriving the extent at run time";
+}
+
+TEST(ResourcePlan, LightsThatCannotReachTheSceneAreLeftOut) {
+    scene::Aabb room;
+    room.extend(glm::vec3(0.0f));
+    room.extend(glm::vec3(1.0f));
+    scene::Light ceiling;
+    ceiling.name = "ceiling";
+    ceiling.position = glm::vec3(0.5f, 0.9f, 0.5f);
+    scene::Light dark = ceiling;
+    dark.name = "dark";
+    dark.intensity = 0.0f;
+    scene::Light away = ceiling;
+    away.name = "away";
+    away.type = scene::LightType::Spot;
+    away.position = glm::vec3(0.5f, 3.0f, 0.5f);
+    away.direction = glm::vec3(0.0f, 1.0f, 0.0f);   // points at the sky
+    away.outerConeAngle = 0.3f;
+    scene::Light down = away;
+    down.name = "down";
+    down.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    scene::Light faint = ceiling;
+    faint.name = "faint";
+    faint.position = glm::vec3(0.5f, 1000.0f, 0.5f);   // 1e-6 of the ceiling light's irradiance
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    std::vector<std::string> dropped;
+    const std::vector<int> kept =
+            lightsReaching({ceiling, dark, away, down, faint, sun}, room, &dropped);
+    EXPECT_EQ(kept, (std::vector<int>{0, 3, 5}));
+    ASSERT_EQ(dropped.size(), 3u);
+    EXPECT_NE(dropped[0].find("dark: emits nothing"), std::string::npos);
+    EXPECT_NE(dropped[1].find("away: its cone misses"), std::string::npos);
+    EXPECT_NE(dropped[2].find("faint: under 1e-4"), std::string::npos);
+}
+
+} // namespace
+} // namespace gi::render
