@@ -61,7 +61,7 @@ VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
     // A flat scene (a floor) has no thickness to size voxels by: use an eighth of its span.
     const float shortest = std::max(std::min(size.x, std::min(size.y, size.z)), longest / 8.0f);
     const float finestVoxel = s.size > 0.0f ? s.size : std::max(shortest, 1e-9f) / v;
-    const float finest = finestVoxel * v;
+    const float finest = finestVoxel * v;   // at most this: the plan may make it finer
     const float covering = voxel::CascadeVolume::finestExtentCovering(bounds);
     if (covering <= kCompactSlack * finest) {
         plan.levels = 1;
@@ -74,14 +74,11 @@ VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
     const float coarsest = 2.0f * longest * 1.1f;
     const int maxLevels = voxel::CascadeVolume::kMaxLevels;
     const int levels = 1 + int(std::ceil(std::log2(coarsest / finest) - 1e-6f));
+    // Rounding the level count up leaves the coarsest level larger than needed; spend that
+    // slack on finer voxels instead: the finest level shrinks until the coarsest just reaches.
     plan.clampCentre = true;
-    if (levels > maxLevels) {
-        plan.levels = maxLevels;
-        plan.finestExtent = coarsest / float(1 << (maxLevels - 1));
-    } else {
-        plan.levels = std::max(levels, 1);
-        plan.finestExtent = finest;
-    }
+    plan.levels = std::clamp(levels, 1, maxLevels);
+    plan.finestExtent = coarsest / float(1 << (plan.levels - 1));
     return plan;
 }
 

@@ -7,7 +7,9 @@
 //     scene-centred level holding all of it, so no level covers only the air in front of it;
 //   - any other scene (Sponza) gets camera-centred levels, the centre kept inside the scene's
 //     bounds, and as many levels as let the coarsest reach every part of the scene from any
-//     point of it: levels past that would hold only empty space and are not allocated;
+//     point of it: levels past that would hold only empty space and are not allocated. The
+//     finest level then shrinks until the coarsest just reaches (finer voxels for the same
+//     memory), so voxel.size is an upper bound;
 //   - atlas: atlas.texel_size (default half the finest voxel) over the scene's surface area,
 //     with room for charts, gutters and packing;
 //   - lights whose light cannot reach the scene get no shadow map and no injection: zero
