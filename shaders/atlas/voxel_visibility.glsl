@@ -1,22 +1,41 @@
 // Visibility between a receiver and a sender through the voxel cascade's occupancy (SEEDS.md
 // section 2, "future work: visibility"; the cascade layout of voxel_common.glsl, coverage in
-// the albedo texture's alpha). The segment is marched in half-voxel steps of the finest level
-// containing each point; every step multiplies the transmittance by 1 - coverage. Both ends
-// first leave their own surface by one voxel along its normal, and the march stops half a
-// voxel short of each end, so a surface never occludes itself. Parts of the segment outside
-// the cascade count as empty.
+// the albedo texture's alpha, each voxel's surface plane in the normal texture). The segment
+// is walked voxel by voxel through the finest level containing each point, each voxel once.
+// An occupied voxel whose surface is one plane (its mean normal is nearly unit length) blocks
+// the segment only where the segment crosses that plane inside the voxel, weighted by its
+// coverage: a ray that grazes a wall within a voxel of it, as rays between neighbouring
+// receivers near a corner do, passes. A voxel of several surfaces (edges, corners) and any
+// voxel of a coarser level block by their coverage alone. Both ends first leave their own
+// surface by one voxel along its normal, and the voxels they then start in do not block, so a
+// surface never occludes itself. Parts of the segment outside the cascade count as empty.
 #ifndef GI_ATLAS_VOXEL_VISIBILITY_GLSL
 #define GI_ATLAS_VOXEL_VISIBILITY_GLSL
 
 #include "../voxel/voxel_common.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
+layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;
 
 const int kMaxVisibilitySteps = 512;
+// Mean normals at least this long come from one plane (two perpendicular planes give 0.71).
+const float kPlanarNormal = 0.9;
+// A segment crosses a voxel's plane when it comes within this many voxel sizes of it on both
+// sides: the stored offset is 8-bit and stochastically rounded, and a surface lying on a
+// voxel face is stored as an offset of -0.5 or +0.5 that may round to just outside the voxel.
+const float kPlaneTolerance = 0.1;
 
 float endOffset(vec3 p) {
     int level = finestLevel(p);
     return level >= 0 ? levelVoxelSize(level) : 0.0;
+}
+
+// Distance along dir from p to where it leaves the axis-aligned box [lo, lo + size].
+float exitDistance(vec3 p, vec3 dir, vec3 lo, float size) {
+    vec3 bound = mix(lo, lo + size, greaterThan(dir, vec3(0.0)));
+    vec3 t = (bound - p) / dir;
+    t = mix(t, vec3(1e30), lessThan(abs(dir), vec3(1e-12)));
+    return max(min(t.x, min(t.y, t.z)), 0.0);
 }
 
 float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 senderNormal) {
@@ -25,22 +44,43 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
     vec3 b = sender + senderNormal * sizeB;
     vec3 d = b - a;
     float len = length(d);
-    if (len <= 0.5 * (sizeA + sizeB)) return 1.0;
+    if (len <= 1e-6 * max(sizeA, sizeB)) return 1.0;
     vec3 dir = d / len;
-    float t = 0.5 * sizeA;
-    float end = len - 0.5 * sizeB;
+    float t = 0.0;
     float transmittance = 1.0;
     float coarsest = levelVoxelSize(voxelLevels() - 1);
-    for (int i = 0; i < kMaxVisibilitySteps && t < end && transmittance > 0.01; ++i) {
+    for (int i = 0; i < kMaxVisibilitySteps && t < len && transmittance > 0.01; ++i) {
         vec3 p = a + dir * t;
         int level = finestLevel(p);
         if (level < 0) {
             t += 0.5 * coarsest;
             continue;
         }
-        float coverage = texelFetch(voxelCoverage, voxelTexel(p, level), 0).a;
-        transmittance *= 1.0 - clamp(coverage, 0.0, 1.0);
-        t += 0.5 * levelVoxelSize(level);
+        float size = levelVoxelSize(level);
+        ivec3 texel = voxelTexel(p, level);
+        vec3 lo = levelOrigin(level) + vec3(texel - ivec3(0, 0, level * voxelResolution())) * size;
+        // Leave the voxel (a small push past its face keeps the walk from stalling on it).
+        float exit = min(t + exitDistance(p, dir, lo, size) + 1e-3 * size, len);
+        float coverage = clamp(texelFetch(voxelCoverage, texel, 0).a, 0.0, 1.0);
+        // The voxels the two ends start in hold only their own neighbourhood (the surfaces
+        // they were pushed off, or a wall meeting them at a corner) and do not block.
+        bool endVoxel = i == 0 || exit >= len;
+        if (coverage > 0.0 && !endVoxel) {
+            vec4 plane = texelFetch(voxelPlane, texel, 0);
+            float normalLength = length(plane.xyz);
+            bool blocks = true;
+            // Level 0 keeps the mean of its fragments' unit normals; coarser levels store a
+            // normalised mean, which no longer tells one plane from several.
+            if (level == 0 && normalLength >= kPlanarNormal) {
+                vec3 n = plane.xyz / normalLength;
+                vec3 centre = lo + 0.5 * size;
+                float s0 = dot(n, p - centre) / size - plane.w;
+                float s1 = dot(n, a + dir * exit - centre) / size - plane.w;
+                blocks = min(s0, s1) <= kPlaneTolerance && max(s0, s1) >= -kPlaneTolerance;
+            }
+            if (blocks) transmittance *= 1.0 - coverage;
+        }
+        t = exit;
     }
     return transmittance;
 }

@@ -31,6 +31,8 @@ enum class DebugView {
 // atlas.visibility=voxel): the cascade layout of shaders/voxel/voxel_common.glsl.
 struct OccupancyVolume {
     const gl::Texture& coverage;       // sampler3D rgba16f at BIND_TEX_VOXEL_ALBEDO, a = coverage
+    const gl::Texture& planes;         // sampler3D rgba8_snorm at BIND_TEX_VOXEL_NORMAL: mean
+                                       // normal and the surface's offset along it
     const gl::Buffer& voxelUniforms;   // VoxelUniforms (std140) at BIND_UBO_VOXEL
     std::uint64_t version = 0;         // changes whenever the occupancy is recomputed
 };

@@ -308,7 +308,7 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
     ASSERT_TRUE(voxels.configure(settings, error)) << error;
     const GiFrameInputs voxelInputs{gpuScene, scene.lights, shadows, frameUniforms, camera, size};
     voxels.update(voxelInputs, profiler);
-    const OccupancyVolume occupancy{voxels.textures().albedo, voxels.uniforms()};
+    const OccupancyVolume occupancy{voxels.textures().albedo, voxels.textures().normal, voxels.uniforms()};
 
     for (const int visibility : {ATLAS_VISIBILITY_NONE, ATLAS_VISIBILITY_VOXEL}) {
         settings.atlas.visibility = visibility;

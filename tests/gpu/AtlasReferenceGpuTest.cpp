@@ -208,18 +208,23 @@ TEST_F(AtlasReferenceGpuTest, CornellBoxFiguresAgainstTheReference) {
     EXPECT_TRUE(std::isfinite(merz.relativeRmse) && std::isfinite(voxel.relativeRmse));
 }
 
-// The issue's accuracy target for the area estimator with voxel visibility at 1024 samples.
-// Disabled because it does not hold: measured on llvmpipe (96x96, atlas 256^2) relative RMSE
-// 0.25 and energy ratio 0.83, against 0.28 and 1.10 for the same estimator without
-// visibility. The voxel occupancy over-occludes: it removes 25% of the light where the blocks
-// hide about 9%, and the pixels it darkens below half the reference (bands where two surfaces
-// meet, 13% of the pixels at 128x128) carry 58% of the squared error; over the others the
-// relative RMSE is 0.17 (docs/results-atlas.md). Run with --gtest_also_run_disabled_tests;
-// enable it once the target is met.
-TEST_F(AtlasReferenceGpuTest, DISABLED_AreaWithVoxelVisibilityMeetsTheIssueTarget) {
+// The issue's accuracy target for the area estimator with voxel visibility, progressive to
+// 1024 samples (16 rotated sets of 64): relative RMSE <= 0.10, energy ratio 0.95-1.05. The
+// frame is supersampled 4x4 and box-averaged: the reference averages each pixel's footprint,
+// so a pixel on an edge mixes the two surfaces there, where one sample per pixel shows one of
+// them (the ceiling's edge row alone then carried 40% of the squared error). Measured on
+// llvmpipe: relative RMSE 0.094, energy 0.961 (one sample per pixel: 0.134, 0.959).
+TEST_F(AtlasReferenceGpuTest, AreaWithVoxelVisibilityMeetsTheIssueTarget) {
     CornellScore cornell;
-    const reference::ImageErrors e = cornell.score(
-            atlasSettings(1024, ATLAS_ESTIMATOR_AREA, ATLAS_VISIBILITY_VOXEL), 1)[0];
+    Settings settings = atlasSettings(64, ATLAS_ESTIMATOR_AREA, ATLAS_VISIBILITY_VOXEL);
+    settings.atlas.progressive = true;
+    settings.atlas.targetSamples = 1024;
+    settings.supersample = 4;
+    const std::vector<reference::ImageErrors> frames = cornell.score(settings, 16);
+    const reference::ImageErrors& e = frames.back();
+    std::printf("Cornell box, area + voxel visibility, progressive to 1024 samples, 4x4 "
+                "supersampled: relative RMSE %.3f, energy ratio %.3f\n",
+            e.relativeRmse, e.energyRatio);
     EXPECT_LE(e.relativeRmse, 0.10);
     EXPECT_GE(e.energyRatio, 0.95);
     EXPECT_LE(e.energyRatio, 1.05);

@@ -53,6 +53,7 @@ void AtlasGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     if (in.occupancy) {
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
     }
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
