@@ -40,6 +40,9 @@ BASE = (512, 25)                       # ratios are relative to the 512^2, 25-sa
 LINEARITY_TOLERANCE = 0.10             # the issue: cost linear in samples and texels within 10%
 ACCURACY_TARGET = (0.10, 0.95, 1.05)   # the issue: relative RMSE, energy ratio band at 1024
 GEOMETRY_COVERAGE = 0.999              # reference::kGeometryCoverage
+# (c) averages 4x4 samples per pixel, as the reference averages each pixel's footprint: with
+# one sample, a pixel on an edge shows one of the two surfaces the reference mixes there.
+SUPERSAMPLE = 4
 # Timings of (a) are flagged when other processes used more than this share of the CPU.
 OTHERS_TOLERANCE = 0.05
 IDLE_WAIT_BUDGET = 180.0   # seconds (a) may wait in all for the machine to go idle
@@ -459,7 +462,7 @@ def convergence_run(scene, frames_list, size, resolution, ref_spp, images_prefix
                 **base, "atlas.resolution": resolution, "atlas.samples": PER_FRAME,
                 "atlas.estimator": est, "atlas.visibility": vis, "atlas.progressive": 1,
                 "atlas.rotate": 1, "atlas.target_samples": PER_FRAME * frames_list[-1],
-                "render.frames": frames}, size, out)
+                "render.frames": frames, "render.supersample": SUPERSAMPLE}, size, out)
             images[frames] = image[mask]
             results[est, vis, frames * PER_FRAME] = errors(image, truth, mask)
         for f0, f1 in zip(frames_list, frames_list[1:]):
@@ -534,7 +537,9 @@ def measure_convergence(say, size, resolution, ref_spp):
     say("mean-energy ratio over the reference's geometry pixels (coverage > 0.999), as in")
     say("src/reference/ImageMetrics.h. 'noise' is the estimator's own relative noise at a count,")
     say("from the image after f0 sets and the independent mean of the sets added up to the next")
-    say("count; an error may move by about that much between counts without anything wrong.\n")
+    say("count; an error may move by about that much between counts without anything wrong.")
+    say(f"Every atlas frame is rendered at {SUPERSAMPLE}x{SUPERSAMPLE} samples per pixel and box-averaged")
+    say(f"(`render.supersample={SUPERSAMPLE}`), as the reference averages each pixel's footprint.\n")
     say("### The Cornell box as it is (light 1 cm under the ceiling)\n")
     convergence_tables(say, cornell)
     say("### The light moved to the middle of the box\n")
@@ -618,11 +623,12 @@ def measure_convergence(say, size, resolution, ref_spp):
     say(f"occupancy removes {100 * (1 - m['area', 'voxel', last][1] / m['area', 'none', last][1]):.0f}% "
         "of the light where the blocks hide about")
     say(f"{100 * (1 - 1 / m['area', 'none', last][1]):.0f}% (if the estimator without visibility "
-        "is otherwise right), so it over-occludes; the")
-    say("black bands in the images below, wherever two surfaces meet (wall and wall, floor and")
-    say("wall, block bases), are most likely receivers looking through their neighbour's voxels.")
-    say("The rest of the error there is at edges and corners (texel-sized seams, bright texels")
-    say("where the clamped 1/r^2 next to the receiver is hit).\n")
+        "is otherwise right). The visibility march tests each")
+    say("voxel's surface plane (shaders/atlas/voxel_visibility.glsl), so rays that graze a wall")
+    say("within a voxel of it pass; testing coverage alone had darkened bands wherever two")
+    say("surfaces meet. What occlusion remains too strong is at edges and corners, where a voxel")
+    say("holds two planes and blocks by its coverage, and the rest of the error is texel noise,")
+    say("texel-sized seams and bright texels where the clamped 1/r^2 next to the receiver is hit.\n")
     say("| atlas, area + voxel, 1024 samples | atlas, merz2010 + voxel, 1024 samples | reference |")
     say("|---|---|---|")
     say("| ![area](images/atlas_cornell_indirect_area_voxel.png) "
