@@ -2,27 +2,17 @@
 // `voxatlas info` reports for a plan are the voxel textures FrameRenderer holds in voxel mode,
 // the atlas bytes its atlas layers in atlas mode, and only the active mode holds any.
 #include "GpuTest.h"
+#include "TestScenes.h"
 
 #include "gi/voxel/VoxelizationManager.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 #include "render/FrameRenderer.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <gtest/gtest.h>
 
 namespace gi::test {
 namespace {
-
-scene::Scene loadScene(const std::string& path) {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(path, scene, error, warnings)) << error;
-    scene::addDefaults(scene);
-    return scene;
-}
 
 std::size_t bytesWithPrefix(const std::vector<gl::MemoryItem>& items, const std::string& prefix) {
     std::size_t total = 0;
@@ -64,7 +54,7 @@ void expectAllocationMatchesPlan(const scene::Scene& scene, const Settings& sett
 class ResourcePlanGpuTest : public GpuTest {};
 
 TEST_F(ResourcePlanGpuTest, CornellBoxAllocatesItsPlan) {
-    const scene::Scene box = loadScene(sourcePath("assets/cornell_box/cornell_box.gltf"));
+    const scene::Scene box = loadCornellBox();
     Settings adaptive;
     adaptive.plan = PLAN_ADAPTIVE;
     adaptive.atlas.cache = false;
@@ -78,7 +68,7 @@ TEST_F(ResourcePlanGpuTest, CornellBoxAllocatesItsPlan) {
 TEST_F(ResourcePlanGpuTest, SponzaAllocatesItsPlan) {
     const std::string path = sponzaPathOrSkip();
     if (path.empty()) GTEST_SKIP();
-    const scene::Scene sponza = loadScene(path);
+    const scene::Scene sponza = loadTestScene(path);
     Settings adaptive;
     adaptive.plan = PLAN_ADAPTIVE;
     expectAllocationMatchesPlan(sponza, adaptive);

@@ -6,14 +6,13 @@
 //   - a scene with an animated cube voxelizes its static part once and the cube every frame,
 //     and matches a renderer that redoes everything (voxel.cache=0) pose after pose.
 #include "GpuTest.h"
+#include "TestScenes.h"
 
 #include "gi/voxel/VoxelizationManager.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 #include "render/FrameRenderer.h"
 #include "scene/Animation.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <gtest/gtest.h>
 
@@ -23,15 +22,6 @@ namespace gi::test {
 namespace {
 
 constexpr int kSize = 64;
-
-scene::Scene loadScene(const std::string& relative) {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(sourcePath(relative), scene, error, warnings)) << error;
-    scene::addDefaults(scene);
-    return scene;
-}
 
 render::CameraView cameraOf(const scene::Scene& scene) {
     return render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
@@ -90,7 +80,7 @@ Settings withCache(bool cache) {
 class StaticCachingGpuTest : public GpuTest {};
 
 TEST_F(StaticCachingGpuTest, StillCameraReusesTheVoxelsAndMatchesTheFullPath) {
-    const scene::Scene box = loadScene("assets/cornell_box/cornell_box.gltf");
+    const scene::Scene box = loadCornellBox();
     const render::CameraView camera = cameraOf(box);
     Renderer cached(box, withCache(true)), full(box, withCache(false));
     render::Image kept, redone;
@@ -107,7 +97,7 @@ TEST_F(StaticCachingGpuTest, StillCameraReusesTheVoxelsAndMatchesTheFullPath) {
 }
 
 TEST_F(StaticCachingGpuTest, CascadeIsRedoneWhenItsPlacementMovesAndLightsChange) {
-    const scene::Scene box = loadScene("assets/cornell_box/cornell_box.gltf");
+    const scene::Scene box = loadCornellBox();
     Renderer cached(box, withCache(true)), full(box, withCache(false));
     render::CameraView camera = cameraOf(box);
     // Both size their cascade from this first camera (voxel.extent=0).
@@ -132,7 +122,7 @@ TEST_F(StaticCachingGpuTest, CascadeIsRedoneWhenItsPlacementMovesAndLightsChange
 }
 
 TEST_F(StaticCachingGpuTest, AnimatedCubeIsRevoxelizedOnTopOfTheKeptStaticPart) {
-    scene::Scene moving = loadScene("assets/cornell_box/cornell_box_animated.gltf");
+    scene::Scene moving = loadTestScene("assets/cornell_box/cornell_box_animated.gltf");
     const render::CameraView camera = cameraOf(moving);
     Renderer cached(moving, withCache(true)), full(moving, withCache(false));
     double worst = 0.0;

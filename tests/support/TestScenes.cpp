@@ -41,14 +41,18 @@ scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target, float 
     return camera;
 }
 
-scene::Scene loadCornellBox() {
+scene::Scene loadTestScene(const std::string& path) {
     scene::Scene scene;
     std::string error;
     std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(sourcePath("assets/cornell_box/cornell_box.gltf"), scene, error,
-            warnings)) << error;
+    EXPECT_TRUE(scene::loadGltf(!path.empty() && path[0] == '/' ? path : sourcePath(path), scene,
+            error, warnings)) << error;
     scene::addDefaults(scene);
     return scene;
+}
+
+scene::Scene loadCornellBox() {
+    return loadTestScene("assets/cornell_box/cornell_box.gltf");
 }
 
 } // namespace gi::test

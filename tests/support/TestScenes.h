@@ -3,6 +3,8 @@
 
 #include "scene/Scene.h"
 
+#include <string>
+
 namespace gi::test {
 
 // A horizontal square of half-size `halfSize` at height y, facing +Y, material 0.
@@ -15,8 +17,11 @@ void addPrimitive(scene::Scene& scene, scene::Primitive primitive);
 [[nodiscard]] scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target,
         float yfovDegrees);
 
-// assets/cornell_box/cornell_box.gltf with the scene defaults added; a load error fails the
-// current test.
+// A glTF scene (absolute path, or relative to the source tree) with the scene defaults added;
+// a load error fails the current test.
+[[nodiscard]] scene::Scene loadTestScene(const std::string& path);
+
+// assets/cornell_box/cornell_box.gltf, as loadTestScene loads it.
 [[nodiscard]] scene::Scene loadCornellBox();
 
 } // namespace gi::test

@@ -2,10 +2,9 @@
 // one scene-centred level, Sponza a camera-centred cascade reaching all of it; the fixed plan
 // reports the thesis' allocation as given; lights that cannot reach the scene are left out.
 #include "render/ResourcePlan.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include "GpuTest.h"
+#include "TestScenes.h"
 
 #include <gtest/gtest.h>
 
@@ -13,15 +12,6 @@
 
 namespace gi::render {
 namespace {
-
-scene::Scene load(const std::string& path) {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(path, scene, error, warnings)) << error;
-    scene::addDefaults(scene);
-    return scene;
-}
 
 glm::vec3 startEye(const scene::Scene& scene) {
     return glm::vec3(scene.cameras.front().worldFromCamera[3]);
@@ -35,7 +25,7 @@ Settings adaptive(int resolution) {
 }
 
 TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
-    const scene::Scene box = load(test::sourcePath("assets/cornell_box/cornell_box.gltf"));
+    const scene::Scene box = test::loadCornellBox();
     const ResourcePlan plan = planResources(box, box.lights, adaptive(32), startEye(box));
     EXPECT_EQ(plan.voxel.levels, 1);
     EXPECT_TRUE(plan.voxel.sceneCentred);
@@ -66,7 +56,7 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
 TEST(ResourcePlan, SponzaIsACameraCascadeReachingAllOfIt) {
     const std::string path = test::sponzaPathOrSkip();
     if (path.empty()) GTEST_SKIP();
-    const scene::Scene sponza = load(path);
+    const scene::Scene sponza = test::loadTestScene(path);
     const ResourcePlan plan = planResources(sponza, sponza.lights, adaptive(32), startEye(sponza));
     const glm::vec3 size = sponza.bounds.size();
     const float shortest = std::min(size.x, std::min(size.y, size.z));
@@ -94,7 +84,7 @@ TEST(ResourcePlan, SponzaIsACameraCascadeReachingAllOfIt) {
 }
 
 TEST(ResourcePlan, ApplyWritesThePlanIntoTheSettings) {
-    const scene::Scene box = load(test::sourcePath("assets/cornell_box/cornell_box.gltf"));
+    const scene::Scene box = test::loadCornellBox();
     const Settings requested = adaptive(64);
     const ResourcePlan plan = planResources(box, box.lights, requested, startEye(box));
     const Settings s = applyPlan(requested, plan);
