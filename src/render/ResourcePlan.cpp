@@ -19,8 +19,6 @@ namespace {
 constexpr float kCompactSlack = 1.25f;
 // Share of the atlas' texels covered by charts, gutters and packing waste left aside.
 constexpr double kAtlasFill = 0.5;
-// Lights below this share of the strongest light's irradiance at the scene's scale.
-constexpr double kLightCutoff = 1e-4;
 
 std::size_t sum(const std::vector<gl::MemoryItem>& items) {
     std::size_t total = 0;
@@ -33,6 +31,12 @@ float distanceToBox(const glm::vec3& p, const scene::Aabb& box) {
 }
 
 double mebibytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+std::string formatCutoff(double cutoff) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", cutoff);
+    return text;
+}
 
 VoxelPlan fixedVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s, const glm::vec3& eye) {
     VoxelPlan plan;
@@ -103,8 +107,8 @@ double sceneSurfaceArea(const scene::Scene& scene) {
 }
 
 std::vector<int> lightsReaching(const std::vector<scene::Light>& lights, const scene::Aabb& bounds,
-        std::vector<std::string>* dropped) {
-    auto drop = [&](const scene::Light& light, std::size_t i, const char* why) {
+        double cutoff, std::vector<std::string>* dropped) {
+    auto drop = [&](const scene::Light& light, std::size_t i, const std::string& why) {
         if (dropped) {
             dropped->push_back((light.name.empty() ? "light " + std::to_string(i) : light.name) +
                                ": " + why);
@@ -151,8 +155,9 @@ std::vector<int> lightsReaching(const std::vector<scene::Light>& lights, const s
                     continue;
                 }
             }
-            if (d > 0.0f && power(l) / (double(d) * double(d)) < kLightCutoff * strongest) {
-                drop(l, i, "under 1e-4 of the strongest light's irradiance on the scene");
+            if (d > 0.0f && power(l) / (double(d) * double(d)) < cutoff * strongest) {
+                drop(l, i, "under " + formatCutoff(cutoff) +
+                                   " of the strongest light's irradiance on the scene");
                 continue;
             }
         }
@@ -174,11 +179,12 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
         const double side = std::sqrt(plan.surfaceArea / kAtlasFill) / texel;
         const int rounded = int(std::ceil(std::min(side, 1e6) / 64.0)) * 64;
         plan.atlasResolution = std::clamp(rounded, 64, 4096);
-        plan.lights = lightsReaching(lights, scene.bounds, &plan.droppedLights);
+        plan.lights = lightsReaching(lights, scene.bounds, kAdaptiveLightCutoff, &plan.droppedLights);
     } else {
         plan.voxel = fixedVoxelPlan(scene.bounds, settings.voxel, eye);
         plan.atlasResolution = settings.atlas.resolution;
-        for (std::size_t i = 0; i < lights.size(); ++i) plan.lights.push_back(int(i));
+        // Only the lights that add nothing at all: the image stays exactly the same.
+        plan.lights = lightsReaching(lights, scene.bounds, 0.0, &plan.droppedLights);
     }
     plan.atlasTexelSize = plan.atlasResolution > 0
             ? std::sqrt(plan.surfaceArea / kAtlasFill) / double(plan.atlasResolution)

@@ -13,8 +13,8 @@
 //   - atlas: atlas.texel_size (default half the finest voxel) over the scene's surface area,
 //     with room for charts, gutters and packing;
 //   - lights whose light cannot reach the scene get no shadow map and no injection: zero
-//     power, a spot cone that misses the bounds, or at most 1e-4 of the strongest light's
-//     irradiance at the scene's scale.
+//     power, a spot cone that misses the bounds (both in every plan: they add nothing), or at
+//     most 1e-4 of the strongest light's irradiance at the scene's scale.
 // Everything here is CPU arithmetic: `voxatlas info` prints a plan without a GL context.
 #pragma once
 
@@ -68,9 +68,14 @@ struct ResourcePlan {
 [[nodiscard]] std::vector<scene::Light> plannedLights(const std::vector<scene::Light>& lights,
         const ResourcePlan& plan);
 
-// Which of `lights` reach `bounds` (see above), with a reason for each one that does not.
+// Which of `lights` reach `bounds`, with a reason for each one that does not: lights of zero
+// power and spots whose cone misses the bounds never do; with cutoff > 0 neither do lights
+// whose irradiance on the bounds stays under cutoff x the strongest light's at the scene's
+// scale. Every plan leaves out the first two (they add nothing); the adaptive plan also
+// applies kAdaptiveLightCutoff.
 [[nodiscard]] std::vector<int> lightsReaching(const std::vector<scene::Light>& lights,
-        const scene::Aabb& bounds, std::vector<std::string>* dropped = nullptr);
+        const scene::Aabb& bounds, double cutoff, std::vector<std::string>* dropped = nullptr);
+inline constexpr double kAdaptiveLightCutoff = 1e-4;
 
 // Total world-space triangle area of every instance, m^2.
 [[nodiscard]] double sceneSurfaceArea(const scene::Scene& scene);

@@ -126,12 +126,19 @@ TEST(ResourcePlan, LightsThatCannotReachTheSceneAreLeftOut) {
     sun.type = scene::LightType::Directional;
     std::vector<std::string> dropped;
     const std::vector<int> kept =
-            lightsReaching({ceiling, dark, away, down, faint, sun}, room, &dropped);
+            lightsReaching({ceiling, dark, away, down, faint, sun}, room, kAdaptiveLightCutoff, &dropped);
     EXPECT_EQ(kept, (std::vector<int>{0, 3, 5}));
     ASSERT_EQ(dropped.size(), 3u);
     EXPECT_NE(dropped[0].find("dark: emits nothing"), std::string::npos);
     EXPECT_NE(dropped[1].find("away: its cone misses"), std::string::npos);
-    EXPECT_NE(dropped[2].find("faint: under 1e-4"), std::string::npos);
+    EXPECT_NE(dropped[2].find("faint: under 0.0001"), std::string::npos);
+    // Without a cutoff (fixed plans) only the lights that add nothing at all are left out.
+    EXPECT_EQ(lightsReaching({ceiling, dark, away, down, faint, sun}, room, 0.0),
+            (std::vector<int>{0, 3, 4, 5}));
+    scene::Scene box = test::loadCornellBox();
+    box.lights.push_back(dark);
+    const ResourcePlan fixed = planResources(box, box.lights, Settings{}, startEye(box));
+    EXPECT_EQ(fixed.lights, (std::vector<int>{0}));
 }
 
 } // namespace
