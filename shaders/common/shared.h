@@ -23,6 +23,9 @@
 #define BIND_SSBO_ATLAS_SENDER_POOL 5   // uint[N x ATLAS_POOL_STRIDE]: the area estimator's
                                         // sender texels (y R + x) of the current sample set,
                                         // ATLAS_POOL_STRIDE per stratum; ~0u = none
+#define BIND_SSBO_SCENE_VERTICES    6   // float[14 per vertex]: GpuScene's vertices (SceneVertex)
+#define BIND_SSBO_ATLAS_VERTICES    7   // float[18 per vertex]: the atlas' vertices (GpuAtlasVertex)
+#define BIND_SSBO_ATLAS_SOURCES     8   // uint[]: per atlas vertex, the scene vertex it copies
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -80,6 +83,9 @@
 #define ATLAS_SENDER_BLOCK          16  // texels per block of the sender table's row prefix sums
 #define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
 #define ATLAS_SENDER_LOCAL_SIZE     64  // work-group size of atlas/sender_sampling
+#define ATLAS_POSE_LOCAL_SIZE       64  // work-group size of atlas/follow_pose
+#define SCENE_VERTEX_FLOATS         14  // floats per GpuScene vertex (scene::SceneVertex)
+#define ATLAS_VERTEX_FLOATS         18  // floats per atlas vertex (atlas::GpuAtlasVertex)
 #define ATLAS_ESTIMATOR_AREA        0   // L cos cos / r^2 x sample area: the rendering equation
 #define ATLAS_ESTIMATOR_MERZ2010    1   // the thesis' eq. 9: L cos(theta_x) x 2 pi / N
 #define ATLAS_VISIBILITY_NONE       0   // senders are never occluded (the thesis)

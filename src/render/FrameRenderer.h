@@ -66,8 +66,8 @@ public:
     GiMode mode() const { return mMode; }
     void setLights(const std::vector<scene::Light>& lights);
     // Uploads the current pose of `scene`'s animated instances (scene/Animation.h). Shadow
-    // maps and voxel GI follow them; the atlas keeps the geometry it was built from (its
-    // charts and G-buffer are not rebuilt for moving objects).
+    // maps, voxel GI and the atlas follow them (the atlas keeps its charts and moves their
+    // vertices).
     void setPose(const scene::Scene& scene);
 
     // Renders one frame of `camera` at outputSize x render.supersample.

@@ -8,6 +8,9 @@
 #include <cstddef>
 
 namespace gi::scene {
+
+static_assert(sizeof(SceneVertex) == SCENE_VERTEX_FLOATS * sizeof(float),
+        "SceneVertex must match atlas/follow_pose.comp");
 namespace {
 
 constexpr glm::vec4 kDefaultBaseColor{0.8f, 0.8f, 0.8f, 1.0f};

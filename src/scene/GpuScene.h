@@ -14,7 +14,7 @@
 
 namespace gi::scene {
 
-struct SceneVertex {             // interleaved, 56 bytes
+struct SceneVertex {             // interleaved, 56 bytes (SCENE_VERTEX_FLOATS floats)
     float position[3];           // world space, metres
     float normal[3];             // world space, unit
     float texcoord0[2];
@@ -60,6 +60,8 @@ public:
     void drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray = nullptr,
             DrawSet set = DrawSet::All) const;
 
+    // Every vertex (SceneVertex), for passes that copy posed positions (atlas/follow_pose).
+    const gl::Buffer& vertexBuffer() const { return mVertices; }
     const gl::Buffer& lightBuffer() const { return mLights; }
     const gl::Buffer& materialBuffer() const { return mMaterials; }
     int lightCount() const { return mLightCount; }

@@ -1,10 +1,11 @@
 // Dynamic GI with animated objects (assets/cornell_box/cornell_box_animated.gltf): a blue cube
 // slides along the front of the floor. Moving it through FrameRenderer::setPose must give the
-// same frame as uploading the scene in that pose from scratch; and since voxel GI
-// revoxelizes the cube every frame, the indirect light around it follows it, as the path
-// tracer's does.
+// same frame as uploading the scene in that pose from scratch; since voxel GI revoxelizes the
+// cube every frame, the indirect light around it follows it, as the path tracer's does; and
+// the atlas moves the cube's chart vertices with it.
 #include "GpuTest.h"
 
+#include "gi/atlas/AtlasGi.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 #include "reference/ReferenceRenderer.h"
@@ -120,6 +121,72 @@ TEST_F(AnimationGpuTest, AnimatedCubeMovesItsBounceLight) {
     EXPECT_NEAR(startVoxel, startTruth, 0.06);
     EXPECT_GT(blueShare(nearEnd[1]), blueShare(nearEnd[0]));
     EXPECT_GT(blueShare(truthEnd[1]), blueShare(truthEnd[0]));
+}
+
+// The world box of the scene's animated instances in their current pose, 1 mm larger so that
+// their faces are inside, and its bottom raised by 1 cm so that the floor under them is not.
+scene::Aabb dynamicInterior(const scene::Scene& scene) {
+    scene::Aabb box;
+    for (const scene::Instance& instance : scene.instances) {
+        if (!instance.dynamic) continue;
+        for (const glm::vec3& p : scene.primitives[std::size_t(instance.primitive)].positions) {
+            box.extend(glm::vec3(instance.worldFromLocal * glm::vec4(p, 1.0f)));
+        }
+    }
+    box.min -= glm::vec3(0.001f);
+    box.max += glm::vec3(0.001f);
+    box.min.y += 0.011f;
+    return box;
+}
+
+// Atlas texels (position layer, w = area > 0) whose world position lies inside `box`.
+int texelsInside(const atlas::AtlasGi& gi, const scene::Aabb& box) {
+    const int r = gi.textures().resolution;
+    std::vector<float> texels(std::size_t(r) * std::size_t(r) * 4);
+    glGetTextureImage(gi.textures().position.id(), 0, GL_RGBA, GL_FLOAT,
+            GLsizei(texels.size() * sizeof(float)), texels.data());
+    int count = 0;
+    for (std::size_t i = 0; i < texels.size(); i += 4) {
+        const glm::vec3 p(texels[i], texels[i + 1], texels[i + 2]);
+        if (texels[i + 3] > 0.0f && glm::all(glm::greaterThanEqual(p, box.min)) &&
+                glm::all(glm::lessThanEqual(p, box.max))) {
+            ++count;
+        }
+    }
+    return count;
+}
+
+// The atlas keeps its charts for a moving object and moves their vertices with it: after
+// setPose, the atlas G-buffer's cube texels are where the cube now is, none are left where it
+// was, and the cube's indirect light is gathered there.
+TEST_F(AnimationGpuTest, AtlasFollowsTheAnimatedCube) {
+    Settings settings;
+    settings.atlas.resolution = 256;
+    settings.atlas.samples = 16;
+    settings.atlas.cache = false;
+    scene::Scene moving = loadAnimated(0.0);
+    const scene::Aabb start = dynamicInterior(moving);
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    std::string error;
+    ASSERT_TRUE(renderer.init(moving, settings, shaders, error)) << error;
+    ASSERT_TRUE(renderer.setMode(render::GiMode::Atlas, error)) << error;
+    const auto* gi = dynamic_cast<const atlas::AtlasGi*>(renderer.technique());
+    ASSERT_NE(gi, nullptr);
+    gl::GpuProfiler profiler;
+    renderer.render(cameraOf(moving), {kSize, kSize}, render::OutputComponent::Final, profiler);
+    const int cubeTexels = texelsInside(*gi, start);
+    ASSERT_GT(cubeTexels, 100) << "the cube's charts are in the atlas";
+    scene::poseScene(moving, 2.0);
+    const scene::Aabb end = dynamicInterior(moving);
+    ASSERT_GT(end.min.x, start.max.x) << "the cube slid away from where it started";
+    renderer.setPose(moving);
+    renderer.render(cameraOf(moving), {kSize, kSize}, render::OutputComponent::Final, profiler);
+    profiler.flush();
+    EXPECT_EQ(texelsInside(*gi, start), 0) << "no atlas texel is left where the cube was";
+    EXPECT_NEAR(texelsInside(*gi, end), cubeTexels, 0.02 * cubeTexels)
+            << "the cube's texels moved with it";
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 TEST_F(AnimationGpuTest, PoseUpdateMatchesAFreshUpload) {

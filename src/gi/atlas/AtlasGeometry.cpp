@@ -7,7 +7,10 @@
 
 namespace gi::atlas {
 
-void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas) {
+static_assert(sizeof(GpuAtlasVertex) == ATLAS_VERTEX_FLOATS * sizeof(float),
+        "GpuAtlasVertex must match atlas/follow_pose.comp");
+
+void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas, bool followsPose) {
     std::vector<GpuAtlasVertex> vertices(atlas.vertices.size());
     for (std::size_t i = 0; i < atlas.vertices.size(); ++i) {
         const AtlasVertex& a = atlas.vertices[i];
@@ -22,7 +25,16 @@ void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas) {
         v.info[0] = float(a.chart);
         v.info[1] = mesh.doubleSided[a.source] ? 1.0f : 0.0f;
     }
+    mVertexCount = vertices.size();
     mVertexBytes = vertices.size() * sizeof(GpuAtlasVertex);
+    mSources = {};
+    mSourceBytes = 0;
+    if (followsPose && !atlas.vertices.empty()) {
+        std::vector<std::uint32_t> sources(atlas.vertices.size());
+        for (std::size_t i = 0; i < sources.size(); ++i) sources[i] = atlas.vertices[i].source;
+        mSourceBytes = sources.size() * sizeof(std::uint32_t);
+        mSources = gl::createBuffer(mSourceBytes, sources.data(), 0, "atlas/vertex_sources");
+    }
     mIndexBytes = atlas.indices.size() * sizeof(std::uint32_t);
     mVertices = gl::createBuffer(mVertexBytes, vertices.data(), 0, "atlas/vertices");
     mIndices = gl::createBuffer(mIndexBytes, atlas.indices.data(), 0, "atlas/indices");
@@ -45,7 +57,9 @@ void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas) {
 }
 
 std::vector<gl::MemoryItem> AtlasGeometry::memory() const {
-    return {{"atlas/vertices", mVertexBytes}, {"atlas/indices", mIndexBytes}};
+    std::vector<gl::MemoryItem> items = {{"atlas/vertices", mVertexBytes}, {"atlas/indices", mIndexBytes}};
+    if (mSourceBytes > 0) items.push_back({"atlas/vertex_sources", mSourceBytes});
+    return items;
 }
 
 } // namespace gi::atlas

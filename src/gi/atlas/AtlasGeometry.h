@@ -13,7 +13,7 @@
 
 namespace gi::atlas {
 
-struct GpuAtlasVertex { // interleaved, 72 bytes
+struct GpuAtlasVertex { // interleaved, 72 bytes (ATLAS_VERTEX_FLOATS floats)
     float position[3];  // world space, metres
     float normal[3];    // world space, unit
     float texcoord0[2];
@@ -25,14 +25,19 @@ struct GpuAtlasVertex { // interleaved, 72 bytes
 
 class AtlasGeometry {
 public:
-    void upload(const AtlasMesh& mesh, const Atlas& atlas);
+    // `followsPose`: also keep, per atlas vertex, the mesh (= GpuScene) vertex it was split
+    // from, so AtlasPosePass can move the vertices with animated instances.
+    void upload(const AtlasMesh& mesh, const Atlas& atlas, bool followsPose);
     const gl::VertexArray& vertexArray() const { return mVertexArray; }
+    const gl::Buffer& vertexBuffer() const { return mVertices; }
+    const gl::Buffer& sources() const { return mSources; }   // empty unless followsPose
+    std::size_t vertexCount() const { return mVertexCount; }
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
-    gl::Buffer mVertices, mIndices;
+    gl::Buffer mVertices, mIndices, mSources;
     gl::VertexArray mVertexArray;
-    std::size_t mVertexBytes = 0, mIndexBytes = 0;
+    std::size_t mVertexBytes = 0, mIndexBytes = 0, mSourceBytes = 0, mVertexCount = 0;
 };
 
 } // namespace gi::atlas

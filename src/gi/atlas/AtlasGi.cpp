@@ -5,6 +5,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -41,9 +42,12 @@ int atlasView(DebugView view) {
 
 bool AtlasGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) {
     mMesh = flattenScene(scene);
+    mFollowsPose = std::any_of(scene.instances.begin(), scene.instances.end(),
+            [](const scene::Instance& instance) { return instance.dynamic; });
     mUniforms = gl::createBuffer(
             sizeof(shader::AtlasUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "atlas/uniforms");
-    return mGBuffer.init(shaders, error) && mSenderSampling.init(shaders, error) &&
+    return mPose.init(shaders, error) && mGBuffer.init(shaders, error) &&
+            mSenderSampling.init(shaders, error) &&
             mGather.init(shaders, error) && mDilate.init(shaders, error) &&
             mResolve.init(shaders, error) && mDebugView.init(shaders, error);
 }
@@ -73,7 +77,8 @@ bool AtlasGi::buildAtlasGeometry(std::string& error) {
             mBuildInfo.cacheError.empty()
                     ? ""
                     : (" (not cached: " + mBuildInfo.cacheError + ")").c_str());
-    mGeometry.upload(mMesh, mAtlas);
+    mGeometry.upload(mMesh, mAtlas, mFollowsPose);
+    mPosedGeometry = ~std::uint64_t(0);
     mTextures.allocate(mSettings.resolution);
     return mGBuffer.attach(mTextures, error) && mGather.attach(mTextures, error) &&
             mDilate.attach(mTextures, error);
@@ -152,6 +157,10 @@ bool AtlasGi::inputsChanged(const GiFrameInputs& in) {
 
 void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     if (mMesh.triangleCount() == 0) return;
+    if (mFollowsPose && mPosedGeometry != in.scene.geometryVersion()) {
+        mPose.execute(in.scene, mGeometry, profiler);
+        mPosedGeometry = in.scene.geometryVersion();
+    }
     if (inputsChanged(in) || !mSettings.progressive) mGBufferValid = false;
     const OccupancyVolume* occupancy =
             mSettings.visibility == ATLAS_VISIBILITY_VOXEL ? in.occupancy : nullptr;

@@ -11,7 +11,9 @@
 // Progressive mode (the thesis' future work, 5.4): a static scene's G-buffer is built once and
 // each frame adds one more rotated sample set until atlas.target_samples; changes to lights,
 // geometry or settings start over. The atlas parameterisation (AtlasBuilder) is built when
-// the resolution or gutter changes, through the disk cache (AtlasCache).
+// the resolution or gutter changes, through the disk cache (AtlasCache). Animated instances
+// keep their charts; their atlas vertices follow the pose (AtlasPosePass) and the G-buffer and
+// sums start over whenever the geometry moves.
 #pragma once
 
 #include "gi/GiTechnique.h"
@@ -21,6 +23,7 @@
 #include "gi/atlas/AtlasGBufferPass.h"
 #include "gi/atlas/AtlasGatherPass.h"
 #include "gi/atlas/AtlasGeometry.h"
+#include "gi/atlas/AtlasPosePass.h"
 #include "gi/atlas/AtlasResolvePass.h"
 #include "gi/atlas/AtlasSenderSamplingPass.h"
 #include "gi/atlas/AtlasTextures.h"
@@ -77,6 +80,11 @@ private:
     bool mWarnedNoOccupancy = false;
     bool mShowDebug = false;
 
+    // Animated instances: the atlas vertices follow GpuScene's pose (AtlasPosePass).
+    bool mFollowsPose = false;
+    std::uint64_t mPosedGeometry = ~std::uint64_t(0);
+
+    AtlasPosePass mPose;
     AtlasGBufferPass mGBuffer;
     AtlasSenderSamplingPass mSenderSampling;
     AtlasGatherPass mGather;
