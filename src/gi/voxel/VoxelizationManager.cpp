@@ -269,8 +269,9 @@ namespace gi::voxel {
 
 std::string VoxelizationManager::status() const {
     char line[160];
-    std::snprintf(line, sizeof line, "voxels %d^3 x %d levels, finest %.3g m, coarsest %.3g m, trace %dx%d",
-            mVolume.resolution(), mVolume.levels(), double(mVolume.voxelSize(0)),
+    std::snprintf(line, sizeof line, "voxels %d^3 x %d level%s, finest %.3g m, coarsest %.3g m, trace %dx%d",
+            mVolume.resolution(), mVolume.levels(), mVolume.levels() == 1 ? "" : "s",
+            double(mVolume.voxelSize(0)),
             double(mVolume.voxelSize(mVolume.levels() - 1)), mTrace.size().x, mTrace.size().y);
     return line;
 }
