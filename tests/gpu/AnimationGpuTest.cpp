@@ -4,6 +4,7 @@
 // cube every frame, the indirect light around it follows it, as the path tracer's does; and
 // the atlas moves the cube's chart vertices with it.
 #include "GpuTest.h"
+#include "TestScenes.h"
 
 #include "gi/atlas/AtlasGi.h"
 #include "gl/GpuProfiler.h"
@@ -11,8 +12,6 @@
 #include "reference/ReferenceRenderer.h"
 #include "render/FrameRenderer.h"
 #include "scene/Animation.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <gtest/gtest.h>
 
@@ -24,12 +23,7 @@ namespace {
 constexpr int kSize = 96;
 
 scene::Scene loadAnimated(double seconds) {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(sourcePath("assets/cornell_box/cornell_box_animated.gltf"), scene,
-            error, warnings)) << error;
-    scene::addDefaults(scene);
+    scene::Scene scene = loadTestScene("assets/cornell_box/cornell_box_animated.gltf");
     scene::poseScene(scene, seconds);
     return scene;
 }

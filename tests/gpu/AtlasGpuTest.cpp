@@ -9,8 +9,6 @@
 
 #include "gi/atlas/AtlasGi.h"
 #include "gi/voxel/VoxelizationManager.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <glad/gl.h>
 
@@ -21,17 +19,6 @@
 
 namespace gi::test {
 namespace {
-
-scene::Scene loadCornell() {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(
-            sourcePath("assets/cornell_box/cornell_box.gltf"), scene, error, warnings))
-            << error;
-    scene::addDefaults(scene);
-    return scene;
-}
 
 // Small atlases and sample counts keep each test to seconds on llvmpipe; the disk cache is
 // off so tests never touch the user's cache directory.
@@ -150,7 +137,7 @@ class AtlasGpuTest : public GpuTest {};
 // the texels' sample areas add up to the scene's surface area, and every texel a triangle
 // touches is written (conservative draw) and has a lit value (dilation) around it.
 TEST_F(AtlasGpuTest, TexelsRoundTripToWorldPositions) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     AtlasFrame frame(scene, atlasSettings(256, 16));
     frame.render({32, 32});
     const atlas::Atlas& atlas = frame.gi().atlas();
@@ -340,7 +327,7 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
 // that does not show the wall, and the point stays redder than the mirror point by the green
 // wall.
 TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     const glm::vec3 nearRed(0.12f, 0.0f, -0.03f), nearGreen(0.556f - 0.12f, 0.0f, -0.03f);
     const scene::Camera withoutWall =
             lookAtCamera(nearRed + glm::vec3(0.0f, 0.3f, 0.0f), nearRed, 20.0f);
@@ -431,7 +418,7 @@ glm::dvec3 floorMean(const scene::Scene& scene, int samples, int frames) {
 // 1.277, 1.279 W/m^2 under the ceiling, 0.874, 0.866, 0.869, 0.867 W/m^2 mid-box.
 TEST_F(AtlasGpuTest, FloorMeanIsStableAsSamplesGrow) {
     for (const bool midBox : {false, true}) {
-        scene::Scene scene = loadCornell();
+        scene::Scene scene = loadCornellBox();
         if (midBox) scene.lights[0].position = glm::vec3(0.278f, 0.42f, -0.15f);
         const glm::dvec3 m16 = floorMean(scene, 16, 1), m64 = floorMean(scene, 64, 1),
                          m256 = floorMean(scene, 256, 1), m4096 = floorMean(scene, 256, 16);
@@ -452,7 +439,7 @@ TEST_F(AtlasGpuTest, FloorMeanIsStableAsSamplesGrow) {
 // Progressive mode adds one rotated set per frame until the target, then stops; new lights
 // start over.
 TEST_F(AtlasGpuTest, ProgressiveAccumulationStopsAtTargetAndRestarts) {
-    scene::Scene scene = loadCornell();
+    scene::Scene scene = loadCornellBox();
     Settings settings = atlasSettings(64, 64);
     settings.atlas.targetSamples = 200;
     AtlasFrame frame(scene, settings);
@@ -477,7 +464,7 @@ TEST_F(AtlasGpuTest, ProgressiveAccumulationStopsAtTargetAndRestarts) {
 
 // Extremes of the settings: every run ends with finite values.
 TEST_F(AtlasGpuTest, ExtremeSettingsStayFinite) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     struct Case {
         int resolution, samples, estimator, gutter;
     };
@@ -506,7 +493,7 @@ TEST_F(AtlasGpuTest, ExtremeSettingsStayFinite) {
 }
 
 TEST_F(AtlasGpuTest, MemoryReportMatchesTheLayers) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     AtlasFrame frame(scene, atlasSettings(256, 64));
     frame.render({32, 32});
     std::size_t layers = 0;
@@ -524,7 +511,7 @@ class AtlasGoldenGpuTest : public GpuTest, public ::testing::WithParamInterface<
 
 // Cornell box, camera 0, 128x128, atlas 256^2, 64 samples, one frame.
 TEST_P(AtlasGoldenGpuTest, CornellView) {
-    const scene::Scene scene = loadCornell();
+    const scene::Scene scene = loadCornellBox();
     AtlasFrame frame(scene, atlasSettings(256, 64));
     frame.render({128, 128}, GetParam().output);
     const render::Image image = frame.image();

@@ -11,8 +11,6 @@
 #include "gl/Shared.h"
 #include "reference/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
-#include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <glad/gl.h>
 
@@ -40,13 +38,7 @@ constexpr int kSampleCounts[] = {16, 64, 256, 1024};
 constexpr glm::vec3 kMidBoxLight(0.278f, 0.42f, -0.15f);
 
 scene::Scene loadCornell(std::optional<glm::vec3> lightPosition) {
-    scene::Scene scene;
-    std::string error;
-    std::vector<std::string> warnings;
-    EXPECT_TRUE(scene::loadGltf(
-            sourcePath("assets/cornell_box/cornell_box.gltf"), scene, error, warnings))
-            << error;
-    scene::addDefaults(scene);
+    scene::Scene scene = loadCornellBox();
     if (lightPosition) scene.lights.at(0).position = *lightPosition;
     return scene;
 }
