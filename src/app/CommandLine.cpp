@@ -280,6 +280,13 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
                 error = "--move '" + *v + "': expected DX,DY,DZ in metres per frame";
                 return std::nullopt;
             }
+        } else if (arg == "--animate") {
+            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
+            if (!parseFloat(*v, config.animationStep) || !(config.animationStep >= 0.0f) ||
+                    config.animationStep > 1e3f) {
+                error = "--animate '" + *v + "': expected seconds per frame between 0 and 1000";
+                return std::nullopt;
+            }
         } else if (arg == "--time") {
             if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
             if (!parseFloat(*v, config.animationTime) || config.animationTime < 0.0f ||
@@ -342,6 +349,8 @@ std::string usage(Command command) {
                "        [--time SECONDS]   (pose of the scene's glTF animations; default 0)\n"
                "        [--move DX,DY,DZ]  (the camera travels this far each frame, warm-up included:\n"
                "                            timings of a moving camera)\n"
+               "        [--animate SECONDS] (the scene's animations play this long each frame, from\n"
+               "                            --time: timings of animated objects)\n"
                "\n"
                "Renders one frame without a display (EGL surfaceless; OSMesa if EGL is missing\n"
                "and --gl was not given) to an sRGB PNG and optionally a linear HDR image.\n"

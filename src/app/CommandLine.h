@@ -49,6 +49,7 @@ struct Config {
     int frames = 0;                          // 0 = interactive
     float animationTime = 0.0f;              // --time: seconds into the scene's animations
     glm::vec3 cameraMove{0.0f};              // --move: metres the camera travels per frame
+    float animationStep = 0.0f;              // --animate: animation seconds played per frame
     std::string screenshotPath;
     std::vector<KeyEvent> keys;
     // bench

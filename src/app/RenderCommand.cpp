@@ -10,6 +10,7 @@
 #include "reference/ProgressBar.h"
 #include "reference/ReferenceCache.h"
 #include "render/ImageIO.h"
+#include "scene/Animation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -102,10 +103,17 @@ int runRender(const Config& config) {
     if (!renderer.setMode(config.mode, error)) return fail(2, error);
 
     gl::GpuProfiler profiler;
-    // --move: each frame sees the camera one step further along the same view direction.
+    // --move: each frame sees the camera one step further along the same view direction;
+    // --animate: and the scene's animations that much later.
+    float animationTime = config.animationTime;
     auto step = [&] {
         camera.eye += config.cameraMove;
         camera.view = camera.view * glm::translate(glm::mat4(1.0f), -config.cameraMove);
+        if (config.animationStep > 0.0f) {
+            animationTime += config.animationStep;
+            scene::poseScene(scene, animationTime);
+            renderer.setPose(scene);
+        }
     };
     for (int frame = 0; frame < config.settings.warmupFrames; ++frame) {
         renderer.render(camera, {width, height}, config.output, profiler);

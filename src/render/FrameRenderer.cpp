@@ -95,17 +95,11 @@ bool FrameRenderer::shadowMapsFit(const std::vector<scene::Light>& lights,
             ShadowPass::memoryFor(lights, settings), error);
 }
 
-void FrameRenderer::replan(const Settings& requested) {
+ResourcePlan FrameRenderer::planFor(const Settings& requested) const {
     const scene::Scene& scene = *mSceneDescription;
     const glm::vec3 eye = scene.cameras.empty() ? scene.bounds.center()
                                                 : glm::vec3(scene.cameras.front().worldFromCamera[3]);
-    mRequested = requested;
-    mPlan = planResources(scene, mAllLights, requested, eye);
-    mSettings = applyPlan(requested, mPlan);
-}
-
-std::vector<scene::Light> FrameRenderer::gpuLights() const {
-    return plannedLights(mAllLights, mPlan);
+    return planResources(scene, mAllLights, requested, eye);
 }
 
 bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
@@ -113,8 +107,10 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     mShaders = &shaders;
     mSceneDescription = &scene;
     mAllLights = scene.lights;
-    replan(settings);
-    mLights = gpuLights();
+    mRequested = settings;
+    mPlan = planFor(settings);
+    mSettings = applyPlan(settings, mPlan);
+    mLights = plannedLights(mAllLights, mPlan);
     if (!shadowMapsFit(mLights, mSettings.shadow, error)) return false;
     mScene = std::make_unique<scene::GpuScene>(scene);
     if (mLights != scene.lights) mScene->setLights(mLights);
@@ -126,23 +122,18 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
 }
 
 bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
-    const Settings previous = mSettings, previousRequest = mRequested;
-    const ResourcePlan previousPlan = mPlan;
-    replan(requested);
-    const Settings settings = mSettings;
-    mSettings = previous;
-    const std::vector<scene::Light> lights = gpuLights();
+    ResourcePlan plan = planFor(requested);
+    const Settings settings = applyPlan(requested, plan);
+    std::vector<scene::Light> lights = plannedLights(mAllLights, plan);
     const bool lightsChanged = lights != mLights;
     const bool shadowsChanged = !(settings.shadow == mSettings.shadow) || lightsChanged;
-    if ((shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) ||
-            (mGi && !mGi->configure(settings, error))) {
-        mPlan = previousPlan;
-        mRequested = previousRequest;
-        return false;
-    }
+    if (shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) return false;
+    if (mGi && !mGi->configure(settings, error)) return false;
+    mRequested = requested;
+    mPlan = std::move(plan);
     mSettings = settings;
     if (lightsChanged) {
-        mLights = lights;
+        mLights = std::move(lights);
         mScene->setLights(mLights);
     }
     if (shadowsChanged) mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
@@ -197,8 +188,9 @@ bool FrameRenderer::setMode(GiMode mode, std::string& error) {
 
 void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
     mAllLights = lights;
-    replan(mRequested);
-    mLights = gpuLights();
+    mPlan = planFor(mRequested);
+    mSettings = applyPlan(mRequested, mPlan);
+    mLights = plannedLights(mAllLights, mPlan);
     mScene->setLights(mLights);
     mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
 }

@@ -94,10 +94,9 @@ private:
     void resizeTargets(glm::ivec2 size);
     std::optional<OccupancyVolume> updateOccupancy(const CameraView& camera, gl::GpuProfiler& profiler);
 
-    // The plan for `requested` and this scene; mSettings = applyPlan(requested, plan).
-    void replan(const Settings& requested);
-    // The lights the plan keeps for the GPU (shadow maps, injection, shading).
-    std::vector<scene::Light> gpuLights() const;
+    // The plan for `requested`, this scene and mAllLights; mSettings is applyPlan of it and
+    // mLights the lights it keeps for the GPU (shadow maps, injection, shading).
+    [[nodiscard]] ResourcePlan planFor(const Settings& requested) const;
 
     Settings mSettings;     // in effect: mRequested with the plan's sizes
     Settings mRequested;    // as given to init() / setSettings()

@@ -15,6 +15,20 @@ namespace {
 
 const std::string kBox = std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box.gltf";
 
+// Frames that ran voxel/voxelize, from a --timings report.
+int voxelizeSamples(const std::string& timingsPath) {
+    std::ifstream in(timingsPath);
+    const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+    if (!report.is_object() || !report.contains("passes")) {
+        ADD_FAILURE() << timingsPath << ": no timings report";
+        return -1;
+    }
+    for (const nlohmann::json& pass : report["passes"]) {
+        if (pass["name"] == "voxel/voxelize") return pass["samples"].get<int>();
+    }
+    return 0;
+}
+
 TEST(ResourcePlanCommand, InfoPrintsBothPlans) {
     const ProcessResult fixed = runVoxatlas({"info", kBox});
     ASSERT_EQ(fixed.exitCode, 0) << fixed.err;
@@ -45,17 +59,31 @@ TEST(ResourcePlanCommand, MovingCameraRevoxelizesOnlyWhenTheCascadeMoves) {
                 dir + "/o.png", "--width", "32", "--height", "32", "--timings", timings, "--move",
                 move, "--set", "render.frames=6", "--set", "voxel.cache=" + cache});
         EXPECT_EQ(r.exitCode, 0) << r.err;
-        std::ifstream in(timings);
-        const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
-        for (const nlohmann::json& pass : report["passes"]) {
-            if (pass["name"] == "voxel/voxelize") return pass["samples"].get<int>();
-        }
-        return 0;
+        return voxelizeSamples(timings);
     };
     EXPECT_EQ(voxelizations("0,0,0", "1"), 1) << "a still camera voxelizes once";
     EXPECT_EQ(voxelizations("0,0,0", "0"), 6) << "without the cache, every frame";
     // 30 cm per frame: beyond a coarsest voxel (8.5 cm), the cascade moves every frame.
     EXPECT_EQ(voxelizations("0,0,-0.3", "1"), 6);
+}
+
+TEST(ResourcePlanCommand, PlayingAnAnimationRevoxelizesOnlyTheFramesItMoves) {
+    const std::string animated =
+            std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box_animated.gltf";
+    const std::string dir = makeTempDir("plan-animate");
+    auto voxelizations = [&](const std::string& step) {
+        const std::string timings = dir + "/t" + step + ".json";
+        const ProcessResult r = runVoxatlas({"render", animated, "--mode", "voxel", "--out",
+                dir + "/o.png", "--width", "32", "--height", "32", "--timings", timings,
+                "--animate", step, "--set", "render.frames=5"});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return voxelizeSamples(timings);
+    };
+    EXPECT_EQ(voxelizations("0"), 1) << "a still pose is voxelized once";
+    EXPECT_EQ(voxelizations("0.05"), 5) << "the moving cube, every frame";
+    const ProcessResult bad = runVoxatlas({"render", animated, "--out", dir + "/b.png", "--animate", "-1"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--animate '-1'"), std::string::npos) << bad.err;
 }
 
 TEST(ResourcePlanCommand, RejectsABadMove) {

@@ -150,10 +150,10 @@ void VoxelizationManager::place(const GiFrameInputs& in) {
 }
 
 bool VoxelizationManager::contentReusable(const GiFrameInputs& in, Content content) const {
-    // Dynamic geometry moves every frame; lights change what is injected (and the
-    // pre-exposure every radiometric value carries).
+    // Animated geometry bumps the version whenever it is posed (a paused animation does not);
+    // lights change what is injected (and the pre-exposure every radiometric value carries).
     return mSettings.cache && mContent == content && mContentScene == &in.scene &&
-           !in.scene.hasDynamicGeometry() && mContentGeometry == in.scene.geometryVersion() &&
+           mContentGeometry == in.scene.geometryVersion() &&
            (content == Content::Occupancy || mContentLights == in.lights);
 }
 

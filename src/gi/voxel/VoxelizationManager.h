@@ -6,7 +6,8 @@
 //   - a static scene whose cascade placement and lights are unchanged is not revoxelized,
 //     injected or propagated: only the cone trace runs;
 //   - a scene with animated instances voxelizes its static geometry once per placement
-//     (StaticVoxelCache) and only its dynamic instances every frame, then injects the lights.
+//     (StaticVoxelCache) and, on every frame they have moved, only the animated instances,
+//     then injects the lights (a paused animation costs what a static scene does).
 #pragma once
 
 #include "gi/GiTechnique.h"
