@@ -1,6 +1,6 @@
 #include "app/CommandLine.h"
 
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -195,14 +195,14 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
         std::optional<std::string> v;
         if (arg == "--out") {
             if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (!render::hasExtension(*v, ".png")) {
+            if (!core::hasExtension(*v, ".png")) {
                 error = "--out " + *v + ": the output image must be a .png file";
                 return std::nullopt;
             }
             config.outPath = *v;
         } else if (arg == "--hdr") {
             if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (!render::hasExtension(*v, ".exr") && !render::hasExtension(*v, ".pfm")) {
+            if (!core::hasExtension(*v, ".exr") && !core::hasExtension(*v, ".pfm")) {
                 error = "--hdr " + *v + ": the HDR image must be a .exr or .pfm file";
                 return std::nullopt;
             }
@@ -302,7 +302,7 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
             }
         } else if (arg == "--screenshot") {
             if (!allowed(arg, {Command::View}) || !(v = value(arg))) return std::nullopt;
-            if (!render::hasExtension(*v, ".png")) {
+            if (!core::hasExtension(*v, ".png")) {
                 error = "--screenshot " + *v + ": the screenshot must be a .png file";
                 return std::nullopt;
             }

@@ -5,7 +5,7 @@
 
 #include "platform/GlContext.h"
 #include "render/FrameRenderer.h"
-#include "render/Settings.h"
+#include "core/Settings.h"
 #include "scene/Scene.h"
 
 #include <optional>

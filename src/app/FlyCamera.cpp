@@ -8,14 +8,14 @@
 
 namespace gi::app {
 
-FlyCamera::FlyCamera(const render::CameraView& start, const scene::Aabb& sceneBounds)
+FlyCamera::FlyCamera(const scene::CameraView& start, const scene::Aabb& sceneBounds)
     : mBounds(sceneBounds) {
     const float diagonal = glm::length(sceneBounds.size());
     mBaseSpeed = kSpeedPerDiagonal * (diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f);
     reset(start);
 }
 
-void FlyCamera::reset(const render::CameraView& start) {
+void FlyCamera::reset(const scene::CameraView& start) {
     mStart = start;
     mAtStart = true;
     mPosition = start.eye;
@@ -59,14 +59,14 @@ void FlyCamera::update(const FlyInput& input, float seconds) {
     }
 }
 
-render::CameraView FlyCamera::view(float aspect) const {
+scene::CameraView FlyCamera::view(float aspect) const {
     if (mAtStart) {
-        render::CameraView view = mStart;
+        scene::CameraView view = mStart;
         view.aspect = aspect;
         view.projection = glm::perspective(view.yfov, aspect, view.znear, view.zfar);
         return view;
     }
-    return render::cameraLookAt(mPosition, mPosition + forward(), mYfov, aspect, mBounds);
+    return scene::cameraLookAt(mPosition, mPosition + forward(), mYfov, aspect, mBounds);
 }
 
 } // namespace gi::app

@@ -6,7 +6,7 @@
 // camera's roll and clip planes included), so the first frame matches `voxatlas render`.
 #pragma once
 
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -35,16 +35,16 @@ public:
 
     FlyCamera() = default;
     // Starts at `start` (its eye, look direction and vertical field of view).
-    FlyCamera(const render::CameraView& start, const scene::Aabb& sceneBounds);
+    FlyCamera(const scene::CameraView& start, const scene::Aabb& sceneBounds);
 
     // Moves to another view, keeping the user's speed scale.
-    void reset(const render::CameraView& start);
+    void reset(const scene::CameraView& start);
 
     // Advances by `seconds` of input.
     void update(const FlyInput& input, float seconds);
 
     // The view for an output of the given aspect ratio (width / height).
-    [[nodiscard]] render::CameraView view(float aspect) const;
+    [[nodiscard]] scene::CameraView view(float aspect) const;
 
     const glm::vec3& position() const { return mPosition; }
     float yaw() const { return mYaw; }       // radians, 0 looks down -Z, + turns towards +X
@@ -64,7 +64,7 @@ private:
     float mBaseSpeed = 1.0f;
     float mSpeedScale = 1.0f;
     scene::Aabb mBounds;
-    render::CameraView mStart;
+    scene::CameraView mStart;
     bool mAtStart = true;
 };
 

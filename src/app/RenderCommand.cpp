@@ -9,7 +9,7 @@
 #include "render/FrameRenderer.h"
 #include "reference/ProgressBar.h"
 #include "reference/ReferenceCache.h"
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 #include "scene/Animation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,7 +26,7 @@ int fail(int status, const std::string& message) {
 }
 
 // The ground-truth path tracer: no GL context, results cached on disk by content.
-int runReference(const Config& config, const scene::Scene& scene, const render::CameraView& camera,
+int runReference(const Config& config, const scene::Scene& scene, const scene::CameraView& camera,
         int width, int height) {
     if (render::isDebugView(config.output)) {
         return fail(2, std::string("--output ") + render::outputComponentName(config.output) +
@@ -42,17 +42,17 @@ int runReference(const Config& config, const scene::Scene& scene, const render::
     bar.finish();
     if (result.final.empty()) return fail(1, error);
     if (!status.storeError.empty()) std::fprintf(stderr, "voxatlas render: %s\n", status.storeError.c_str());
-    const render::Image& image = config.output == render::OutputComponent::Direct ? result.direct
+    const core::Image& image = config.output == render::OutputComponent::Direct ? result.direct
                                  : config.output == render::OutputComponent::Indirect ? result.indirect
                                                                                       : result.final;
     std::vector<std::string> written;
     auto cleanUp = [&] {
         for (const std::string& path : written) std::filesystem::remove(path);
     };
-    if (!render::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
+    if (!core::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
     written.push_back(config.outPath);
     if (!config.hdrPath.empty()) {
-        if (!render::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
+        if (!core::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
         written.push_back(config.hdrPath);
     }
     if (!config.timingsPath.empty()) {
@@ -76,7 +76,7 @@ int runReference(const Config& config, const scene::Scene& scene, const render::
 int runRender(const Config& config) {
     std::string error;
     for (const std::string* path : {&config.outPath, &config.hdrPath, &config.timingsPath}) {
-        if (!path->empty() && !render::checkWritable(*path, error)) return fail(2, error);
+        if (!path->empty() && !core::checkWritable(*path, error)) return fail(2, error);
     }
 
     scene::Scene scene;
@@ -84,7 +84,7 @@ int runRender(const Config& config) {
 
     const int width = config.width > 0 ? config.width : 512;
     const int height = config.height > 0 ? config.height : 512;
-    render::CameraView camera;
+    scene::CameraView camera;
     if (!selectCamera(config, scene, float(width) / float(height), camera, error)) return fail(2, error);
     if (config.mode == render::GiMode::Reference) return runReference(config, scene, camera, width, height);
     if (!render::FrameRenderer::shadowMapsFit(scene.lights, config.settings.shadow, error)) {
@@ -132,17 +132,17 @@ int runRender(const Config& config) {
                                                "resolutions with --set)" : ""));
     }
 
-    const render::Image image = renderer.readback();
-    if (!render::allFinite(image)) return fail(1, "the rendered image has non-finite pixels");
+    const core::Image image = renderer.readback();
+    if (!core::allFinite(image)) return fail(1, "the rendered image has non-finite pixels");
 
     std::vector<std::string> written;
     auto cleanUp = [&] {
         for (const std::string& path : written) std::filesystem::remove(path);
     };
-    if (!render::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
+    if (!core::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
     written.push_back(config.outPath);
     if (!config.hdrPath.empty()) {
-        if (!render::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
+        if (!core::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
         written.push_back(config.hdrPath);
     }
     if (!config.timingsPath.empty()) {

@@ -37,9 +37,9 @@ bool loadScene(const Config& config, scene::Scene& scene, std::string& error) {
 }
 
 bool selectCamera(const Config& config, const scene::Scene& scene, float aspect,
-        render::CameraView& camera, std::string& error) {
+        scene::CameraView& camera, std::string& error) {
     if (config.cameraSpec) {
-        camera = render::cameraLookAt(config.cameraSpec->eye - scene.origin,
+        camera = scene::cameraLookAt(config.cameraSpec->eye - scene.origin,
                 config.cameraSpec->target - scene.origin,
                 glm::radians(config.cameraSpec->yfovDegrees), aspect, scene.bounds);
         return true;
@@ -49,7 +49,7 @@ bool selectCamera(const Config& config, const scene::Scene& scene, float aspect,
                 ": the scene has " + std::to_string(scene.cameras.size()) + " camera(s)";
         return false;
     }
-    camera = render::cameraFromScene(scene.cameras[std::size_t(config.cameraIndex)], aspect,
+    camera = scene::cameraFromScene(scene.cameras[std::size_t(config.cameraIndex)], aspect,
             scene.bounds);
     return true;
 }

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "app/CommandLine.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/Scene.h"
 
 #include <string>
@@ -16,6 +16,6 @@ namespace gi::app {
 
 // The --camera index or spec, for an output of the given aspect ratio.
 [[nodiscard]] bool selectCamera(const Config& config, const scene::Scene& scene, float aspect,
-        render::CameraView& camera, std::string& error);
+        scene::CameraView& camera, std::string& error);
 
 } // namespace gi::app

@@ -7,7 +7,7 @@
 
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
-#include "render/Settings.h"
+#include "core/Settings.h"
 
 #include <glm/glm.hpp>
 

@@ -4,13 +4,12 @@
 #include "app/RenderCommand.h"
 #include "app/SceneSetup.h"
 #include "app/Ui.h"
-#include "gi/voxel/VoxelizationManager.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Limits.h"
 #include "gl/ShaderLibrary.h"
 #include "platform/GlfwWindow.h"
 #include "render/FrameRenderer.h"
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 #include "render/PresentPass.h"
 #include "scene/Animation.h"
 
@@ -86,7 +85,7 @@ std::string nextScreenshotPath() {
 class Viewer {
 public:
     Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
-            std::unique_ptr<platform::GlfwWindow> window, const render::CameraView& camera);
+            std::unique_ptr<platform::GlfwWindow> window, const scene::CameraView& camera);
     int run();
 
 private:
@@ -105,7 +104,7 @@ private:
     void reloadShaders();
     FlyInput readInput();
     UiFrame uiFrame(double frameMs) const;
-    bool writeScreenshot(const render::Image& image, const std::string& path);
+    bool writeScreenshot(const core::Image& image, const std::string& path);
     void notify(const std::string& message);
     std::string cameraLabel() const;
     // Distance from the camera to the coarsest cascade level's far corner (m).
@@ -139,7 +138,7 @@ private:
 };
 
 Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
-        std::unique_ptr<platform::GlfwWindow> window, const render::CameraView& camera)
+        std::unique_ptr<platform::GlfwWindow> window, const scene::CameraView& camera)
     : mConfig(config), mScene(std::move(scene)), mWindow(std::move(window)),
       mSettings(config.settings), mCamera(camera, mScene->bounds),
       mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex),
@@ -286,11 +285,8 @@ void Viewer::changeSetting(const std::function<void(Settings&)>& change, const s
 }
 
 float Viewer::coarsestReach() const {
-    const auto* technique = mRenderer.technique();
-    if (const auto* voxels = dynamic_cast<const voxel::VoxelizationManager*>(technique)) {
-        const int coarsest = voxels->volume().levels() - 1;
-        return voxels->volume().extent(coarsest) * std::sqrt(3.0f);
-    }
+    const gi::GiTechnique* technique = mRenderer.technique();
+    if (technique && technique->gatherReach() > 0.0f) return technique->gatherReach();
     return 2.0f * glm::length(mScene->bounds.size());
 }
 
@@ -299,7 +295,7 @@ void Viewer::nextCamera() {
     const int count = int(mScene->cameras.size());
     mCameraIndex = (mCameraIndex + 1) % count;
     const glm::ivec2 size = glm::max(mWindow->framebufferSize(), glm::ivec2(1));
-    mCamera.reset(render::cameraFromScene(mScene->cameras[std::size_t(mCameraIndex)],
+    mCamera.reset(scene::cameraFromScene(mScene->cameras[std::size_t(mCameraIndex)],
             float(size.x) / float(size.y), mScene->bounds));
     notify("camera " + cameraLabel());
 }
@@ -380,9 +376,9 @@ UiFrame Viewer::uiFrame(double frameMs) const {
     return frame;
 }
 
-bool Viewer::writeScreenshot(const render::Image& image, const std::string& path) {
+bool Viewer::writeScreenshot(const core::Image& image, const std::string& path) {
     std::string error;
-    if (!render::writePng(path, image, error)) {
+    if (!core::writePng(path, image, error)) {
         notify("screenshot failed: " + error);
         say(error);
         return false;
@@ -490,7 +486,7 @@ int Viewer::run() {
 
 int runViewer(const Config& config) {
     std::string error;
-    if (!config.screenshotPath.empty() && !render::checkWritable(config.screenshotPath, error)) {
+    if (!config.screenshotPath.empty() && !core::checkWritable(config.screenshotPath, error)) {
         return fail(2, error);
     }
     for (const KeyEvent& event : config.keys) {
@@ -504,7 +500,7 @@ int runViewer(const Config& config) {
     if (!loadScene(config, *scene, error)) return fail(2, error);
     const int width = config.width > 0 ? config.width : kDefaultWidth;
     const int height = config.height > 0 ? config.height : kDefaultHeight;
-    render::CameraView camera;
+    scene::CameraView camera;
     if (!selectCamera(config, *scene, float(width) / float(height), camera, error)) {
         return fail(2, error);
     }

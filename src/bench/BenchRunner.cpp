@@ -61,10 +61,10 @@ struct ScoredErrors {
 // Errors over several frames of a configuration: the root mean square of the per-frame
 // relative RMSE (one frame of a stochastic technique, e.g. one atlas sample set, can be far
 // luckier or unluckier than the next) and the mean energy ratio.
-ScoredErrors scoreFrames(const std::vector<render::Image>& frames, const render::Image& reference,
+ScoredErrors scoreFrames(const std::vector<core::Image>& frames, const core::Image& reference,
         const std::vector<float>& coverage) {
     double squares = 0.0, energy = 0.0;
-    for (const render::Image& image : frames) {
+    for (const core::Image& image : frames) {
         const reference::ImageErrors e = reference::measureImageError(image, reference, coverage);
         squares += e.relativeRmse * e.relativeRmse;
         energy += e.energyRatio;
@@ -212,7 +212,7 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
         profiler.clearSamples();
         const int scored = std::max(1, mOptions.scoredFrames);
         const bool progressive = configuration.accumulatedFrames > 1;
-        std::vector<render::Image> finalImages, indirectImages;
+        std::vector<core::Image> finalImages, indirectImages;
         std::vector<double> frameMs;
         for (int i = 0; i < mOptions.timedFrames; ++i) {
             glFinish();

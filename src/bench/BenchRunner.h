@@ -18,8 +18,8 @@
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "reference/ReferenceRenderer.h"
-#include "render/CameraView.h"
-#include "render/Settings.h"
+#include "scene/CameraView.h"
+#include "core/Settings.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -37,7 +37,7 @@ struct BenchScene {
     std::string path;                  // the glTF file
     std::string cameraText;            // how the camera was chosen ("camera 0", "0,2,14,...")
     const scene::Scene* scene = nullptr;
-    render::CameraView camera;
+    scene::CameraView camera;
     glm::ivec2 size{0};                // output pixels
     std::vector<BenchConfiguration> configurations;
 };

@@ -13,7 +13,7 @@
 #pragma once
 
 #include "render/FrameRenderer.h"
-#include "render/Settings.h"
+#include "core/Settings.h"
 
 #include <string>
 #include <vector>

@@ -5,12 +5,12 @@
 // implement it without knowing each other.
 #pragma once
 
+#include "core/Settings.h"
+#include "gi/ShadowMaps.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
-#include "render/CameraView.h"
-#include "render/Settings.h"
-#include "render/ShadowPass.h"
+#include "scene/CameraView.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
 
@@ -40,9 +40,9 @@ struct OccupancyVolume {
 struct GiFrameInputs {
     const scene::GpuScene& scene;          // world-space geometry, materials, lights
     const std::vector<scene::Light>& lights;   // the same lights on the CPU
-    const render::ShadowPass& shadows;     // shadow maps of every light, already rendered
+    const ShadowMaps& shadows;              // shadow maps of every light, already rendered
     const gl::Buffer& frameUniforms;       // FrameUniforms of the camera view (std140)
-    const render::CameraView& camera;
+    const scene::CameraView& camera;
     glm::ivec2 outputSize;                 // full-resolution render size, pixels
     DebugView debugView = DebugView::None;
     const OccupancyVolume* occupancy = nullptr;   // voxel occupancy of this frame, if any
@@ -72,6 +72,9 @@ public:
     virtual std::vector<gl::MemoryItem> memory() const = 0;
     // One line for the overlay: the state a user tunes against (resolution, progress).
     virtual std::string status() const { return ""; }
+    // How far from the camera the technique gathers light (m), for controls that scale with
+    // it (the viewer's maximum cone distance keys); 0 when the technique has no such bound.
+    virtual float gatherReach() const { return 0.0f; }
 };
 
 } // namespace gi

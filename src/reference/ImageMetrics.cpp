@@ -6,7 +6,7 @@
 
 namespace gi::reference {
 
-ImageErrors measureImageError(const render::Image& actual, const render::Image& reference,
+ImageErrors measureImageError(const core::Image& actual, const core::Image& reference,
         std::span<const float> mask, float threshold) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -10,7 +10,7 @@
 // pixels, which a rasterizer and a path tracer cover differently, do not dominate the score.
 #pragma once
 
-#include "render/Image.h"
+#include "core/Image.h"
 
 #include <cstddef>
 #include <span>
@@ -34,8 +34,8 @@ struct ImageErrors {
 // width * height values, rows top to bottom), or over all pixels when the mask is empty.
 // A mask of the wrong size counts as a size mismatch. With no counted pixels the ratios are
 // NaN. Non-finite pixel values make the results NaN or infinite, never silently finite.
-[[nodiscard]] ImageErrors measureImageError(const render::Image& actual,
-        const render::Image& reference, std::span<const float> mask = {},
+[[nodiscard]] ImageErrors measureImageError(const core::Image& actual,
+        const core::Image& reference, std::span<const float> mask = {},
         float threshold = kGeometryCoverage);
 
 } // namespace gi::reference

@@ -1,7 +1,7 @@
 #include "reference/ReferenceCache.h"
 
-#include "reference/Pcg32.h"
-#include "render/ImageIO.h"
+#include "core/Hasher.h"
+#include "core/ImageIO.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,58 +19,10 @@
 namespace gi::reference {
 namespace {
 
+using core::Hasher;
+
 constexpr int kMaxDimension = 65536;
 const char* const kImageNames[] = {"direct", "indirect", "final", "coverage"};
-
-// Two 64-bit lanes over 64-bit words: lane A is FNV-1a's xor-multiply with an extra xorshift
-// (so high input bits reach low state bits), lane B an add-multiply-rotate. Not
-// cryptographic; 128 bits make an accidental collision between cache entries negligible.
-class Hasher {
-public:
-    void bytes(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        std::size_t i = 0;
-        for (; i + 8 <= size; i += 8) {
-            std::uint64_t word;
-            std::memcpy(&word, p + i, 8);
-            mix(word);
-        }
-        std::uint64_t tail = 0;
-        if (size > i) std::memcpy(&tail, p + i, size - i);
-        mix(tail ^ (std::uint64_t(size - i) << 56));
-        mLength += size;
-    }
-    template <class T> void value(const T& v) {
-        static_assert(std::is_trivially_copyable_v<T>);
-        bytes(&v, sizeof v);
-    }
-    template <class T> void vector(const std::vector<T>& values) {
-        value(std::uint64_t(values.size()));
-        bytes(values.data(), values.size() * sizeof(T));
-    }
-    void string(const std::string& text) {
-        value(std::uint64_t(text.size()));
-        bytes(text.data(), text.size());
-    }
-    std::string hex() const {
-        char text[33];
-        std::snprintf(text, sizeof text, "%016llx%016llx",
-                static_cast<unsigned long long>(mix64(mA ^ mLength)),
-                static_cast<unsigned long long>(mix64(mB + mLength)));
-        return text;
-    }
-
-private:
-    void mix(std::uint64_t word) {
-        mA = (mA ^ word) * 0x100000001B3ull;
-        mA ^= mA >> 29;
-        mB = std::rotl((mB + word) * 0x9E3779B97F4A7C15ull, 27);
-    }
-
-    std::uint64_t mA = 0xCBF29CE484222325ull;   // FNV-1a 64 offset basis
-    std::uint64_t mB = 0x84222325CBF29CE4ull;
-    std::uint64_t mLength = 0;
-};
 
 std::string checksum(const std::vector<float>& values) {
     Hasher hasher;
@@ -185,7 +137,7 @@ std::string temporaryName(const std::filesystem::path& path) {
 
 } // namespace
 
-std::string referenceCacheKey(const scene::Scene& scene, const render::CameraView& camera,
+std::string referenceCacheKey(const scene::Scene& scene, const scene::CameraView& camera,
         int width, int height, const ReferenceSettings& settings) {
     Hasher h;
     h.string("voxatlas reference");
@@ -253,12 +205,12 @@ bool ReferenceCache::load(const std::string& key, ReferenceResult& out) const {
             !readNumberOrNull(json, "seconds", result.seconds)) {
         return false;
     }
-    render::Image* targets[] = {&result.direct, &result.indirect, &result.final, nullptr};
-    render::Image coverage;
+    core::Image* targets[] = {&result.direct, &result.indirect, &result.final, nullptr};
+    core::Image coverage;
     for (int i = 0; i < 4; ++i) {
-        render::Image image;
+        core::Image image;
         std::string error;
-        if (!render::readHdr(entryFile(mDirectory, key, std::string(".") + kImageNames[i] + ".pfm"),
+        if (!core::readHdr(entryFile(mDirectory, key, std::string(".") + kImageNames[i] + ".pfm"),
                     image, error) ||
                 image.width != width || image.height != height || !finite(image.rgb) ||
                 checksums->value(kImageNames[i], std::string()) != checksum(image.rgb)) {
@@ -297,17 +249,17 @@ bool ReferenceCache::store(const std::string& key, const ReferenceResult& result
     const std::filesystem::path jsonPath = entryFile(mDirectory, key, ".json");
     std::filesystem::remove(jsonPath, ec);
 
-    render::Image coverage(result.width(), result.height());
+    core::Image coverage(result.width(), result.height());
     for (std::size_t p = 0; p < pixels; ++p) {
         coverage.rgb[3 * p] = coverage.rgb[3 * p + 1] = coverage.rgb[3 * p + 2] =
                 result.coverage[p];
     }
-    const render::Image* images[] = {&result.direct, &result.indirect, &result.final, &coverage};
+    const core::Image* images[] = {&result.direct, &result.indirect, &result.final, &coverage};
     nlohmann::json checksums = nlohmann::json::object();
     for (int i = 0; i < 4; ++i) {
         const std::string path =
                 entryFile(mDirectory, key, std::string(".") + kImageNames[i] + ".pfm").string();
-        if (!render::writeHdr(path, *images[i], error)) return false;
+        if (!core::writeHdr(path, *images[i], error)) return false;
         checksums[kImageNames[i]] = checksum(images[i]->rgb);
     }
     const nlohmann::json json = {{"format", kReferenceCacheFormat}, {"key", key},
@@ -340,7 +292,7 @@ bool ReferenceCache::store(const std::string& key, const ReferenceResult& result
     return true;
 }
 
-ReferenceResult renderReferenceCached(const scene::Scene& scene, const render::CameraView& camera,
+ReferenceResult renderReferenceCached(const scene::Scene& scene, const scene::CameraView& camera,
         int width, int height, const ReferenceSettings& settings, const ReferenceCache& cache,
         CachedRenderStatus& status, std::string& error, const ProgressCallback& progress) {
     status = {};

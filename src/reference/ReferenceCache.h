@@ -25,7 +25,7 @@ constexpr int kReferenceCacheFormat = 1;
 
 // 32 lowercase hex digits.
 [[nodiscard]] std::string referenceCacheKey(const scene::Scene& scene,
-        const render::CameraView& camera, int width, int height,
+        const scene::CameraView& camera, int width, int height,
         const ReferenceSettings& settings);
 
 class ReferenceCache {
@@ -57,7 +57,7 @@ struct CachedRenderStatus {
 // Embree scene only then), stores the result and returns it. A failed store is reported in
 // `status` but does not fail the render. An empty result means the renderer failed (`error`).
 [[nodiscard]] ReferenceResult renderReferenceCached(const scene::Scene& scene,
-        const render::CameraView& camera, int width, int height,
+        const scene::CameraView& camera, int width, int height,
         const ReferenceSettings& settings, const ReferenceCache& cache,
         CachedRenderStatus& status, std::string& error, const ProgressCallback& progress = {});
 

@@ -1,4 +1,5 @@
 #include "reference/ReferenceRenderer.h"
+#include "core/Colour.h"
 
 #include "reference/OwenSobol.h"
 #include "reference/Pcg32.h"
@@ -36,7 +37,7 @@ enum GlWrap : int { kRepeat = 10497, kClampToEdge = 33071, kMirroredRepeat = 336
 const std::array<float, 256>& srgbTable() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i) t[std::size_t(i)] = scene::srgbToLinear(float(i) / 255.0f);
+        for (int i = 0; i < 256; ++i) t[std::size_t(i)] = core::srgbToLinear(float(i) / 255.0f);
         return t;
     }();
     return table;
@@ -471,7 +472,7 @@ struct LightVertex {
 class PathTracer {
 public:
     PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
-            const render::CameraView& camera, int width, int height, int bounces)
+            const scene::CameraView& camera, int width, int height, int bounces)
         : mState(state), mLights(lights), mWidth(width), mHeight(height), mBounces(bounces) {
         const glm::dmat4 clipToWorld =
                 glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
@@ -773,7 +774,7 @@ PixelEstimate renderPixel(const PathTracer& tracer, int x, int y, std::uint64_t 
     return estimate;
 }
 
-double relativeNoise(const HalfImages& halves, const render::Image& combined,
+double relativeNoise(const HalfImages& halves, const core::Image& combined,
         const std::vector<float>& coverage, bool directPart, bool indirectPart, int spp) {
     if (spp < 2) return std::numeric_limits<double>::quiet_NaN();
     const double nA = double((spp + 1) / 2), nB = double(spp / 2);
@@ -841,7 +842,7 @@ bool ReferenceRenderer::valid() const { return mState != nullptr; }
 
 double ReferenceRenderer::buildSeconds() const { return mState ? mState->buildSeconds : 0.0; }
 
-ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int width, int height,
+ReferenceResult ReferenceRenderer::render(const scene::CameraView& camera, int width, int height,
         const ReferenceSettings& settings, const ProgressCallback& progress) const {
     ReferenceResult result;
     if (!mState || width <= 0 || height <= 0) return result;
@@ -849,9 +850,9 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
     const int spp = std::max(settings.spp, 1);
     const int bounces = std::max(settings.bounces, 0);
     const std::size_t pixelCount = std::size_t(width) * std::size_t(height);
-    result.direct = render::Image(width, height);
-    result.indirect = render::Image(width, height);
-    result.final = render::Image(width, height);
+    result.direct = core::Image(width, height);
+    result.indirect = core::Image(width, height);
+    result.final = core::Image(width, height);
     result.coverage.assign(pixelCount, 0.0f);
     result.spp = spp;
     result.bounces = bounces;
@@ -934,7 +935,7 @@ ReferenceResult ReferenceRenderer::render(const render::CameraView& camera, int 
     return result;
 }
 
-ReferenceResult renderReference(const scene::Scene& scene, const render::CameraView& camera,
+ReferenceResult renderReference(const scene::Scene& scene, const scene::CameraView& camera,
         int width, int height, const ReferenceSettings& settings,
         const ProgressCallback& progress) {
     const ReferenceRenderer renderer(scene);

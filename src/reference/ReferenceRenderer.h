@@ -21,9 +21,9 @@
 #pragma once
 
 #include "reference/ImageMetrics.h"
-#include "render/CameraView.h"
-#include "render/Image.h"
-#include "render/Settings.h"
+#include "scene/CameraView.h"
+#include "core/Image.h"
+#include "core/Settings.h"
 #include "scene/Scene.h"
 
 #include <cstdint>
@@ -68,10 +68,10 @@ struct NoiseEstimate {
 };
 
 struct ReferenceResult {
-    render::Image direct;        // linear radiance: emission seen directly + direct light at
+    core::Image direct;        // linear radiance: emission seen directly + direct light at
                                  // the first hit
-    render::Image indirect;      // everything after the first bounce: final - direct
-    render::Image final;         // direct + indirect
+    core::Image indirect;      // everything after the first bounce: final - direct
+    core::Image final;         // direct + indirect
     std::vector<float> coverage; // width * height, rows top to bottom: fraction of the pixel's
                                  // paths whose camera ray hit geometry, in [0, 1]
     NoiseEstimate noise;
@@ -105,7 +105,7 @@ public:
 
     // Renders width x height pixels seen from `camera` (its projection and view; the aspect
     // ratio is the caller's, normally width / height). settings.threads = 0 uses all cores.
-    [[nodiscard]] ReferenceResult render(const render::CameraView& camera, int width, int height,
+    [[nodiscard]] ReferenceResult render(const scene::CameraView& camera, int width, int height,
             const ReferenceSettings& settings, const ProgressCallback& progress = {}) const;
 
 private:
@@ -116,7 +116,7 @@ private:
 
 // Convenience for one image: builds a renderer for `scene` and renders.
 [[nodiscard]] ReferenceResult renderReference(const scene::Scene& scene,
-        const render::CameraView& camera, int width, int height,
+        const scene::CameraView& camera, int width, int height,
         const ReferenceSettings& settings, const ProgressCallback& progress = {});
 
 } // namespace gi::reference

@@ -140,7 +140,7 @@ bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
     return true;
 }
 
-std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const CameraView& camera,
+std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::CameraView& camera,
         gl::GpuProfiler& profiler) {
     Settings occupancySettings = mSettings;
     occupancySettings.voxel.sceneCentred = true;
@@ -213,7 +213,7 @@ void FrameRenderer::resizeTargets(glm::ivec2 size) {
     glNamedFramebufferTexture(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
 }
 
-void FrameRenderer::render(const CameraView& camera, glm::ivec2 outputSize,
+void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSize,
         OutputComponent output, gl::GpuProfiler& profiler) {
     profiler.newFrame();
     resizeTargets(outputSize * mSettings.supersample);
@@ -269,8 +269,8 @@ float FrameRenderer::radianceScale() const {
     return isRadiometric(mLastOutput) ? 1.0f / mScene->exposure() : 1.0f;
 }
 
-Image FrameRenderer::readback() const {
-    Image full(mRenderSize.x, mRenderSize.y);
+core::Image FrameRenderer::readback() const {
+    core::Image full(mRenderSize.x, mRenderSize.y);
     std::vector<float> rgba(std::size_t(mRenderSize.x) * std::size_t(mRenderSize.y) * 4);
     glGetTextureImage(mColor.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)),
             rgba.data());

@@ -5,15 +5,15 @@
 
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "render/ForwardPass.h"
 #include "render/ResourcePlan.h"
 #include "scene/GpuScene.h"
 #include "render/ShadowPass.h"
 #include "gi/GiTechnique.h"
 #include "gi/voxel/VoxelizationManager.h"
-#include "render/Image.h"
-#include "render/Settings.h"
+#include "core/Image.h"
+#include "core/Settings.h"
 #include "scene/Scene.h"
 
 #include <memory>
@@ -71,12 +71,12 @@ public:
     void setPose(const scene::Scene& scene);
 
     // Renders one frame of `camera` at outputSize x render.supersample.
-    void render(const CameraView& camera, glm::ivec2 outputSize, OutputComponent output,
+    void render(const scene::CameraView& camera, glm::ivec2 outputSize, OutputComponent output,
             gl::GpuProfiler& profiler);
 
     // The last frame as linear radiance, box-averaged down to the output size, with the
     // pre-exposure (scene/Exposure.h) divided out.
-    [[nodiscard]] Image readback() const;
+    [[nodiscard]] core::Image readback() const;
 
     // RGBA32F linear radiance of the last frame times radianceScale()^-1 (alpha = geometry
     // coverage), render size: multiply by radianceScale() for W/(m^2 sr).
@@ -92,7 +92,7 @@ public:
 
 private:
     void resizeTargets(glm::ivec2 size);
-    std::optional<OccupancyVolume> updateOccupancy(const CameraView& camera, gl::GpuProfiler& profiler);
+    std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);
 
     // The plan for `requested`, this scene and mAllLights; mSettings is applyPlan of it and
     // mLights the lights it keeps for the GPU (shadow maps, injection, shading).

@@ -1,4 +1,5 @@
 #include "render/PresentPass.h"
+#include "core/Colour.h"
 
 #include "gl/Shared.h"
 #include "scene/Scene.h"
@@ -43,7 +44,7 @@ void PresentPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     glUseProgram(0);
 }
 
-Image PresentPass::readDefaultFramebuffer(glm::ivec2 size) {
+core::Image PresentPass::readDefaultFramebuffer(glm::ivec2 size) {
     std::vector<std::uint8_t> rgba(std::size_t(size.x) * std::size_t(size.y) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glNamedFramebufferReadBuffer(0, GL_BACK);
@@ -51,8 +52,8 @@ Image PresentPass::readDefaultFramebuffer(glm::ivec2 size) {
     glReadnPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()),
             rgba.data());
     std::array<float, 256> decode{};
-    for (int i = 0; i < 256; ++i) decode[std::size_t(i)] = scene::srgbToLinear(float(i) / 255.0f);
-    Image image(size.x, size.y);
+    for (int i = 0; i < 256; ++i) decode[std::size_t(i)] = core::srgbToLinear(float(i) / 255.0f);
+    core::Image image(size.x, size.y);
     // GL rows run bottom to top; images run top to bottom.
     for (int y = 0; y < size.y; ++y) {
         const std::uint8_t* row =

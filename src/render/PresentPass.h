@@ -9,7 +9,7 @@
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
-#include "render/Image.h"
+#include "core/Image.h"
 
 #include <glm/glm.hpp>
 
@@ -33,7 +33,7 @@ public:
 
     // What the window shows now (the back buffer, before the swap), decoded from sRGB back to
     // linear so the PNG writer reproduces the same 8-bit values. For overlay screenshots.
-    [[nodiscard]] static Image readDefaultFramebuffer(glm::ivec2 size);
+    [[nodiscard]] static core::Image readDefaultFramebuffer(glm::ivec2 size);
 
 private:
     gl::ProgramRef mProgram;

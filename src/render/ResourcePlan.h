@@ -19,7 +19,7 @@
 #pragma once
 
 #include "gl/Objects.h"
-#include "render/Settings.h"
+#include "core/Settings.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

@@ -8,11 +8,12 @@
 //          and the GpuShadow table (one entry per light, same order as GpuLight).
 #pragma once
 
+#include "core/Settings.h"
+#include "gi/ShadowMaps.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
-#include "render/Settings.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -21,7 +22,7 @@
 
 namespace gi::render {
 
-class ShadowPass {
+class ShadowPass final : public ShadowMaps {
 public:
     bool init(gl::ShaderLibrary& shaders, std::string& error);
 
@@ -33,7 +34,7 @@ public:
     void execute(const scene::GpuScene& scene, gl::GpuProfiler& profiler);
 
     // Binds the maps and the GpuShadow table at their shared.h slots.
-    void bind() const;
+    void bind() const override;
 
     // Forces the next execute to re-render (geometry moved).
     void invalidate() { mDirty = true; }

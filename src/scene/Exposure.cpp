@@ -12,7 +12,7 @@ float characteristicIrradiance(const std::vector<Light>& lights, const Aabb& bou
     const double diagonal = std::max(double(glm::length(size)), 1e-6);
     double peak = std::isfinite(maxEmission) ? std::max(0.0, double(maxEmission)) * M_PI : 0.0;
     for (const Light& light : lights) {
-        const double power = double(std::max({light.color.r, light.color.g, light.color.b})) *
+        const double power = double(std::max({light.color.x, light.color.y, light.color.z})) *
                              double(light.intensity);
         if (!std::isfinite(power) || power <= 0.0) continue;
         peak = std::max(peak, light.type == LightType::Directional ? power

@@ -161,8 +161,4 @@ struct Scene {
     std::size_t vertexCount() const;     // over all instances
 };
 
-// sRGB electro-optical transfer function (IEC 61966-2-1), 8-bit code to linear.
-float srgbToLinear(float encoded);
-float linearToSrgb(float linear);
-
 } // namespace gi::scene

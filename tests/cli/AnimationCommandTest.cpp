@@ -2,7 +2,7 @@
 // refused with one line. `--light none` leaves a scene without any light.
 #include "Process.h"
 
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 
 #include <gtest/gtest.h>
 
@@ -15,22 +15,22 @@ namespace {
 const std::string kAnimated =
         std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box_animated.gltf";
 
-render::Image renderAt(const std::string& dir, const std::string& time,
+core::Image renderAt(const std::string& dir, const std::string& time,
         const std::vector<std::string>& extra = {}) {
     std::vector<std::string> args = {"render", kAnimated, "--out", dir + "/t" + time + ".png",
             "--hdr", dir + "/t" + time + ".pfm", "--width", "48", "--height", "48", "--time", time};
     args.insert(args.end(), extra.begin(), extra.end());
     const ProcessResult r = runVoxatlas(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    render::Image image;
+    core::Image image;
     std::string error;
-    EXPECT_TRUE(render::readHdr(dir + "/t" + time + ".pfm", image, error)) << error;
+    EXPECT_TRUE(core::readHdr(dir + "/t" + time + ".pfm", image, error)) << error;
     return image;
 }
 
 TEST(AnimationCommand, TimePosesTheAnimatedCube) {
     const std::string dir = makeTempDir("animation-time");
-    const render::Image start = renderAt(dir, "0"), middle = renderAt(dir, "2"),
+    const core::Image start = renderAt(dir, "0"), middle = renderAt(dir, "2"),
                         loop = renderAt(dir, "4");
     ASSERT_EQ(start.rgb.size(), middle.rgb.size());
     int changed = 0;
@@ -61,7 +61,7 @@ TEST(AnimationCommand, BadTimesAreRefused) {
 
 TEST(AnimationCommand, LightNoneRendersADarkScene) {
     const std::string dir = makeTempDir("light-none");
-    const render::Image image = renderAt(dir, "0", {"--light", "none"});
+    const core::Image image = renderAt(dir, "0", {"--light", "none"});
     float brightest = 0.0f;
     for (float v : image.rgb) brightest = std::max(brightest, v);
     EXPECT_EQ(brightest, 0.0f) << "no scene light and no default light";

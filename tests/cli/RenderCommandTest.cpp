@@ -3,7 +3,7 @@
 #include "ImageCompare.h"
 #include "Process.h"
 
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -40,14 +40,14 @@ TEST(RenderCommand, WritesPngHdrAndTimings) {
             dir + "/a.exr", "--timings", dir + "/t.json", "--width", "96", "--height", "64",
             "--set", "render.frames=3"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    render::Image png, exr;
+    core::Image png, exr;
     std::string error;
-    ASSERT_TRUE(render::readPng(dir + "/a.png", png, error)) << error;
-    ASSERT_TRUE(render::readHdr(dir + "/a.exr", exr, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/a.png", png, error)) << error;
+    ASSERT_TRUE(core::readHdr(dir + "/a.exr", exr, error)) << error;
     EXPECT_EQ(png.width, 96);
     EXPECT_EQ(png.height, 64);
     EXPECT_EQ(exr.width, 96);
-    EXPECT_TRUE(render::allFinite(exr));
+    EXPECT_TRUE(core::allFinite(exr));
     // The PNG is the HDR image encoded: identical after 8-bit sRGB quantisation.
     const ImageDifference d = compareImages(png, exr, 1);
     EXPECT_LE(d.maxAbsDiff, 1);
@@ -73,9 +73,9 @@ TEST(RenderCommand, WritesPfm) {
     const ProcessResult r = runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--hdr",
             dir + "/a.pfm", "--width", "32", "--height", "32"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    render::Image pfm;
+    core::Image pfm;
     std::string error;
-    ASSERT_TRUE(render::readHdr(dir + "/a.pfm", pfm, error)) << error;
+    ASSERT_TRUE(core::readHdr(dir + "/a.pfm", pfm, error)) << error;
     EXPECT_EQ(pfm.width, 32);
     fs::remove_all(dir);
 }
@@ -89,10 +89,10 @@ TEST(RenderCommand, EglAndOSMesaAgree) {
                 dir + "/" + provider + ".png", "--gl", provider, "--width", "128", "--height", "128"});
         ASSERT_EQ(r.exitCode, 0) << provider << ": " << r.err;
     }
-    render::Image egl, osmesa;
+    core::Image egl, osmesa;
     std::string error;
-    ASSERT_TRUE(render::readPng(dir + "/egl.png", egl, error)) << error;
-    ASSERT_TRUE(render::readPng(dir + "/osmesa.png", osmesa, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/egl.png", egl, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/osmesa.png", osmesa, error)) << error;
     const ImageTolerance tolerance;
     const ImageDifference d = compareImages(egl, osmesa, tolerance.pixelThreshold);
     EXPECT_LE(d.failingFraction, tolerance.maxFailingFraction) << "maxAbsDiff " << d.maxAbsDiff;
@@ -157,9 +157,9 @@ TEST(RenderCommand, AtlasModeRenders) {
                 "atlas.resolution=128", "--set", "atlas.samples=16", "--set", "atlas.cache=0",
                 "--set", "atlas.estimator=merz2010"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        render::Image image;
+        core::Image image;
         std::string error;
-        ASSERT_TRUE(render::readPng(dir + "/a.png", image, error)) << error;
+        ASSERT_TRUE(core::readPng(dir + "/a.png", image, error)) << error;
         EXPECT_EQ(image.width, 48);
         double sum = 0.0;
         for (float value : image.rgb) sum += value;
@@ -182,11 +182,11 @@ TEST(RenderCommand, ReferenceModeWritesEachComponent) {
                 "--width", "32", "--height", "32", "--set", "reference.spp=16"}, 120, env);
         ASSERT_EQ(r.exitCode, 0) << r.err;
     }
-    render::Image finalImage, direct, indirect;
+    core::Image finalImage, direct, indirect;
     std::string error;
-    ASSERT_TRUE(render::readHdr(dir + "/final.pfm", finalImage, error)) << error;
-    ASSERT_TRUE(render::readHdr(dir + "/direct.pfm", direct, error)) << error;
-    ASSERT_TRUE(render::readHdr(dir + "/indirect.pfm", indirect, error)) << error;
+    ASSERT_TRUE(core::readHdr(dir + "/final.pfm", finalImage, error)) << error;
+    ASSERT_TRUE(core::readHdr(dir + "/direct.pfm", direct, error)) << error;
+    ASSERT_TRUE(core::readHdr(dir + "/indirect.pfm", indirect, error)) << error;
     double sumIndirect = 0.0;
     for (std::size_t i = 0; i < finalImage.rgb.size(); ++i) {
         // final = direct + indirect, up to float rounding.

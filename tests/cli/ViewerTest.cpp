@@ -2,9 +2,10 @@
 // hotkeys, screenshots, refusals of bad input, and the headless fallback without a display.
 // Without xvfb-run the window tests skip, unless VOXATLAS_REQUIRE_GPU=1 makes that a failure.
 #include "ImageCompare.h"
+#include "core/Colour.h"
 #include "Process.h"
 
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 #include "scene/Scene.h"
 
 #include <gtest/gtest.h>
@@ -74,9 +75,9 @@ protected:
 };
 
 // Mean of the sRGB-encoded channels, 0..1; a lit Cornell box is far from black.
-float meanEncoded(const render::Image& image) {
+float meanEncoded(const core::Image& image) {
     double sum = 0.0;
-    for (float v : image.rgb) sum += scene::linearToSrgb(v);
+    for (float v : image.rgb) sum += core::linearToSrgb(v);
     return image.rgb.empty() ? 0.0f : float(sum / double(image.rgb.size()));
 }
 
@@ -86,9 +87,9 @@ TEST_F(ViewerTest, ScriptedRunWritesScreenshotOfWindowSize) {
             "--width", "320", "--height", "240"});
     ASSERT_FALSE(r.timedOut);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    render::Image image;
+    core::Image image;
     std::string error;
-    ASSERT_TRUE(render::readPng(dir + "/s.png", image, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/s.png", image, error)) << error;
     EXPECT_EQ(image.width, 320);
     EXPECT_EQ(image.height, 240);
     // The box's walls and light cover most of the frame: a mean encoded value above 0.05
@@ -105,10 +106,10 @@ TEST_F(ViewerTest, ScreenshotMatchesHeadlessRender) {
     const ProcessResult render = runVoxatlas({"render", kCornell, "--out", dir + "/r.png",
             "--width", "160", "--height", "120"}, kTimeoutSeconds);
     ASSERT_EQ(render.exitCode, 0) << render.err;
-    render::Image v, h;
+    core::Image v, h;
     std::string error;
-    ASSERT_TRUE(render::readPng(dir + "/v.png", v, error)) << error;
-    ASSERT_TRUE(render::readPng(dir + "/r.png", h, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/v.png", v, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/r.png", h, error)) << error;
     // Same renderer, camera and size on the same Mesa build; GLX and EGL contexts may differ in
     // rasterisation details only, so a few edge pixels may move by a step or two.
     const ImageDifference d = compareImages(v, h, 3);
@@ -139,10 +140,10 @@ TEST_F(ViewerTest, ModeKeysSwitchOrExplain) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("is not available"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("atlas: 15 charts"), std::string::npos) << "key 3 builds the atlas: " << r.err;
-    render::Image withGi, withoutGi;
+    core::Image withGi, withoutGi;
     std::string error;
-    ASSERT_TRUE(render::readPng(dir + "/s.png", withGi, error)) << error;
-    ASSERT_TRUE(render::readPng(dir + "/direct.png", withoutGi, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/s.png", withGi, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/direct.png", withoutGi, error)) << error;
     double sumGi = 0.0, sumDirect = 0.0;
     for (float value : withGi.rgb) sumGi += value;
     for (float value : withoutGi.rgb) sumDirect += value;
@@ -156,9 +157,9 @@ TEST_F(ViewerTest, F12WritesNumberedScreenshot) {
             "--height", "96", "--keys", "1:F12,2:F12"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* name : {"voxatlas-1.png", "voxatlas-2.png"}) {
-        render::Image image;
+        core::Image image;
         std::string error;
-        ASSERT_TRUE(render::readPng(dir + "/" + name, image, error)) << error;
+        ASSERT_TRUE(core::readPng(dir + "/" + name, image, error)) << error;
         EXPECT_EQ(image.width, 128);
         EXPECT_EQ(image.height, 96);
     }
@@ -216,9 +217,9 @@ TEST(ViewerNoDisplay, FallsBackToHeadlessScreenshot) {
         GTEST_SKIP() << "no headless OpenGL context either: " << r.err;
     }
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    render::Image image;
+    core::Image image;
     std::string error;
-    ASSERT_TRUE(render::readPng(dir + "/x.png", image, error)) << error;
+    ASSERT_TRUE(core::readPng(dir + "/x.png", image, error)) << error;
     EXPECT_EQ(image.width, 96);
     EXPECT_EQ(image.height, 72);
     fs::remove_all(dir);

@@ -10,8 +10,8 @@
 #include "Process.h"
 #include "SceneVariants.h"
 
-#include "render/Image.h"
-#include "render/ImageIO.h"
+#include "core/Image.h"
+#include "core/ImageIO.h"
 
 #include <gtest/gtest.h>
 
@@ -74,11 +74,11 @@ RunResult renderOnce(const std::string& dir, const std::string& scene,
     const auto start = std::chrono::steady_clock::now();
     run.process = runVoxatlas(args, timeoutSeconds, {"VOXATLAS_CACHE_DIR=" + dir + "/cache"});
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    render::Image image;
+    core::Image image;
     std::string error;
-    if (run.process.exitCode != 0 || !render::readHdr(pfm, image, error)) return run;
+    if (run.process.exitCode != 0 || !core::readHdr(pfm, image, error)) return run;
     run.imageRead = true;
-    run.finite = render::allFinite(image);
+    run.finite = core::allFinite(image);
     double sum = 0.0, lowest = 0.0;
     for (float v : image.rgb) {
         sum += v;

@@ -28,12 +28,12 @@ scene::Scene loadAnimated(double seconds) {
     return scene;
 }
 
-render::CameraView cameraOf(const scene::Scene& scene) {
-    return render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+scene::CameraView cameraOf(const scene::Scene& scene) {
+    return scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
 }
 
 // The mean colour of the floor (y = 0) pixels whose point lies in [x0, x1] x [z0, z1].
-glm::dvec3 floorMean(const render::Image& image, const render::CameraView& camera, float x0,
+glm::dvec3 floorMean(const core::Image& image, const scene::CameraView& camera, float x0,
         float x1, float z0, float z1) {
     glm::dvec3 sum(0.0);
     int count = 0;
@@ -77,10 +77,10 @@ TEST_F(AnimationGpuTest, AnimatedCubeMovesItsBounceLight) {
         ASSERT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
         ASSERT_TRUE(renderer.setMode(render::GiMode::Voxel, error)) << error;
         gl::GpuProfiler profiler;
-        const render::CameraView camera = cameraOf(scene);
+        const scene::CameraView camera = cameraOf(scene);
         renderer.render(camera, {kSize, kSize}, render::OutputComponent::Indirect, profiler);
         profiler.flush();
-        const render::Image indirect = renderer.readback();
+        const core::Image indirect = renderer.readback();
         nearStart[i] = floorMean(indirect, camera, startStrip[0], startStrip[1], startStrip[2], startStrip[3]);
         nearEnd[i] = floorMean(indirect, camera, endStrip[0], endStrip[1], endStrip[2], endStrip[3]);
         ReferenceSettings reference;
@@ -201,10 +201,10 @@ TEST_F(AnimationGpuTest, PoseUpdateMatchesAFreshUpload) {
     (void)frame(updated, moving);
     scene::poseScene(moving, 1.5);
     updated.setPose(moving);
-    const render::Image a = frame(updated, moving);
+    const core::Image a = frame(updated, moving);
     ASSERT_TRUE(fresh.init(posed, settings, shaders, error)) << error;
     ASSERT_TRUE(fresh.setMode(render::GiMode::Voxel, error)) << error;
-    const render::Image b = frame(fresh, posed);
+    const core::Image b = frame(fresh, posed);
     ASSERT_EQ(a.rgb.size(), b.rgb.size());
     double diff = 0.0, total = 0.0;
     for (std::size_t i = 0; i < a.rgb.size(); ++i) {

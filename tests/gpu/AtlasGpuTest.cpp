@@ -47,7 +47,7 @@ public:
     }
     void render(glm::ivec2 size, render::OutputComponent output = render::OutputComponent::Final,
             int frames = 1, std::optional<scene::Camera> camera = std::nullopt) {
-        const render::CameraView view = render::cameraFromScene(
+        const scene::CameraView view = scene::cameraFromScene(
                 camera ? *camera : mScene.cameras[0], float(size.x) / float(size.y), mScene.bounds);
         gl::GpuProfiler profiler;
         for (int i = 0; i < frames; ++i) mRenderer.render(view, size, output, profiler);
@@ -64,7 +64,7 @@ public:
         for (glm::vec4& t : texels) t = glm::vec4(glm::vec3(t) / exposure, t.a);
         return texels;
     }
-    render::Image image() const { return mRenderer.readback(); }
+    core::Image image() const { return mRenderer.readback(); }
     render::FrameRenderer& renderer() { return mRenderer; }
 
 private:
@@ -271,7 +271,7 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
     settings.voxel.levels = 1;
     settings.voxel.extent = 3.2f;
     const glm::ivec2 size(32, 32);
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
 
     gl::ShaderLibrary shaders;
     scene::GpuScene gpuScene(scene);
@@ -338,7 +338,7 @@ TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     EXPECT_TRUE(a.lit() == b.lit()) << "the lit atlas depends on the camera";
 
     auto pixelOf = [&](const scene::Camera& camera, const glm::vec3& point, glm::ivec2& pixel) {
-        const render::CameraView view = render::cameraFromScene(camera, 1.0f, scene.bounds);
+        const scene::CameraView view = scene::cameraFromScene(camera, 1.0f, scene.bounds);
         const glm::vec4 clip = view.viewProjection() * glm::vec4(point, 1.0f);
         const glm::vec2 ndc = glm::vec2(clip) / clip.w;
         pixel = glm::ivec2(glm::floor((glm::vec2(ndc.x, -ndc.y) * 0.5f + 0.5f) * glm::vec2(size)));
@@ -350,12 +350,12 @@ TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     ASSERT_TRUE(pixelOf(withoutWall, nearRed, pb));
     ASSERT_TRUE(pixelOf(scene.cameras[0], nearGreen, pg));
     // The red wall is the plane x = 0: every pixel of the second view sees the floor at x > 0.
-    const render::CameraView viewB = render::cameraFromScene(withoutWall, 1.0f, scene.bounds);
+    const scene::CameraView viewB = scene::cameraFromScene(withoutWall, 1.0f, scene.bounds);
     glm::vec3 leftEdge;
     ASSERT_TRUE(pixelOnPlaneY(viewB, size.x, size.y, 0, size.y / 2, 0.0f, leftEdge));
     ASSERT_GT(std::min(leftEdge.x, 0.24f - leftEdge.x), 0.02f)
             << "the second view must not show the red wall";
-    const render::Image imageA = a.image(), imageB = b.image();
+    const core::Image imageA = a.image(), imageB = b.image();
     const glm::vec3 ia = imageA.at(pa.x, pa.y), ib = imageB.at(pb.x, pb.y);
     ASSERT_GT(ia.r, 0.0f);
     // The two pixels' footprints on the floor differ by millimetres: E changes by well under
@@ -476,7 +476,7 @@ TEST_F(AtlasGpuTest, ExtremeSettingsStayFinite) {
         settings.atlas.gutter = c.gutter;
         AtlasFrame frame(scene, settings);
         frame.render({24, 24}, render::OutputComponent::Final, 2);
-        EXPECT_TRUE(render::allFinite(frame.image())) << "resolution " << c.resolution;
+        EXPECT_TRUE(core::allFinite(frame.image())) << "resolution " << c.resolution;
         for (const glm::vec4& t : frame.lit()) {
             ASSERT_TRUE(std::isfinite(t.r) && std::isfinite(t.g) && std::isfinite(t.b))
                     << "resolution " << c.resolution;
@@ -487,7 +487,7 @@ TEST_F(AtlasGpuTest, ExtremeSettingsStayFinite) {
                      render::OutputComponent::AtlasAlbedo, render::OutputComponent::AtlasIndirect,
                      render::OutputComponent::AtlasCharts}) {
             frame.render({24, 24}, view);
-            EXPECT_TRUE(render::allFinite(frame.image())) << render::outputComponentName(view);
+            EXPECT_TRUE(core::allFinite(frame.image())) << render::outputComponentName(view);
         }
     }
 }
@@ -514,8 +514,8 @@ TEST_P(AtlasGoldenGpuTest, CornellView) {
     const scene::Scene scene = loadCornellBox();
     AtlasFrame frame(scene, atlasSettings(256, 64));
     frame.render({128, 128}, GetParam().output);
-    const render::Image image = frame.image();
-    ASSERT_TRUE(render::allFinite(image));
+    const core::Image image = frame.image();
+    ASSERT_TRUE(core::allFinite(image));
     // The atlas passes have no order-dependent atomics: the defaults (6/255, 0.2%, 0.5/255)
     // hold between runs and between the EGL and OSMesa contexts of one Mesa build.
     const std::string failure =

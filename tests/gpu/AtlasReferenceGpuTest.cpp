@@ -62,7 +62,7 @@ class CornellScore {
 public:
     explicit CornellScore(std::optional<glm::vec3> lightPosition = std::nullopt)
             : mScene(loadCornell(lightPosition)) {
-        mCamera = render::cameraFromScene(mScene.cameras[0], 1.0f, mScene.bounds);
+        mCamera = scene::cameraFromScene(mScene.cameras[0], 1.0f, mScene.bounds);
         ReferenceSettings reference;
         reference.spp = kReferenceSpp;
         reference.bounces = 1;
@@ -97,7 +97,7 @@ public:
 
 private:
     scene::Scene mScene;
-    render::CameraView mCamera;
+    scene::CameraView mCamera;
     reference::ReferenceResult mTruth;
     gl::ShaderLibrary mShaders;
     render::FrameRenderer mRenderer;

@@ -11,7 +11,7 @@
 #include "gl/ShaderLibrary.h"
 #include "reference/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneDefaults.h"
 
@@ -43,7 +43,7 @@ TEST_F(AtlasSponzaGpuTest, IndirectEnergyAgainstTheReference) {
     ASSERT_TRUE(scene::loadGltf(path, scene, error, warnings)) << error;
     scene::addDefaults(scene); // the documented default light, as the bench renders it
     // The bench's Sponza view: inside the arcade, looking down the atrium.
-    const render::CameraView camera = render::cameraLookAt({0.0f, 2.0f, 14.0f},
+    const scene::CameraView camera = scene::cameraLookAt({0.0f, 2.0f, 14.0f},
             {0.0f, 4.0f, -10.0f}, glm::radians(60.0f), float(kWidth) / float(kHeight),
             scene.bounds);
     ReferenceSettings referenceSettings;
@@ -73,8 +73,8 @@ TEST_F(AtlasSponzaGpuTest, IndirectEnergyAgainstTheReference) {
         gl::GpuProfiler profiler;
         renderer.render(camera, {kWidth, kHeight}, render::OutputComponent::Indirect, profiler);
         profiler.flush();
-        const render::Image image = renderer.readback();
-        EXPECT_TRUE(render::allFinite(image));
+        const core::Image image = renderer.readback();
+        EXPECT_TRUE(core::allFinite(image));
         const reference::ImageErrors e =
                 reference::measureImageError(image, truth.indirect, truth.coverage);
         std::printf("atlas %d^2, %d samples, %s visibility: energy ratio %.3f, relative RMSE "

@@ -4,7 +4,7 @@
 #include "GpuTest.h"
 #include "ImageCompare.h"
 
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 
 #include <glm/gtc/constants.hpp>
@@ -20,7 +20,7 @@ TEST_F(DirectLightGpuTest, PlaneUnderPointLightMatchesInverseSquareLaw) {
     request.scenePath = "assets/analytic/plane_point_light.gltf";
     request.width = request.height = kSize;
     request.settings.specular = 0.0f;
-    const render::Image image = renderScene(request);
+    const core::Image image = renderScene(request);
     ASSERT_FALSE(image.empty());
 
     scene::Scene scene;
@@ -30,7 +30,7 @@ TEST_F(DirectLightGpuTest, PlaneUnderPointLightMatchesInverseSquareLaw) {
     ASSERT_EQ(scene.lights.size(), 1u);
     const scene::Light& light = scene.lights[0];
     const float rho = scene.materials.at(0).baseColorFactor.r;
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
 
     int probes = 0;
     for (int y = 2; y < kSize; y += 6) {
@@ -60,7 +60,7 @@ TEST_F(DirectLightGpuTest, IndirectOutputIsZeroWithoutGi) {
     RenderRequest request;
     request.scenePath = "assets/cornell_box/cornell_box.gltf";
     request.output = render::OutputComponent::Indirect;
-    const render::Image image = renderScene(request);
+    const core::Image image = renderScene(request);
     ASSERT_FALSE(image.empty());
     for (float v : image.rgb) ASSERT_EQ(v, 0.0f);
 }
@@ -69,9 +69,9 @@ TEST_F(DirectLightGpuTest, CornellBoxGolden) {
     RenderRequest request;
     request.scenePath = "assets/cornell_box/cornell_box.gltf";
     request.width = request.height = 256;
-    const render::Image image = renderScene(request);
+    const core::Image image = renderScene(request);
     ASSERT_FALSE(image.empty());
-    EXPECT_TRUE(render::allFinite(image));
+    EXPECT_TRUE(core::allFinite(image));
     const std::string failure = compareWithReference(image, "frame/cornell_direct");
     EXPECT_TRUE(failure.empty()) << failure;
 }

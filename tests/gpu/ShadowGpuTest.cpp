@@ -4,7 +4,7 @@
 #include "GpuTest.h"
 #include "TestScenes.h"
 
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -45,9 +45,9 @@ TEST_P(ShadowGpuTest, OccluderCastsItsShadowAndNothingElse) {
     RenderRequest request;
     request.width = request.height = kSize;
     request.settings.specular = 0.0f;
-    const render::Image image = renderScene(s, request);
+    const core::Image image = renderScene(s, request);
     ASSERT_FALSE(image.empty());
-    const render::CameraView camera = render::cameraFromScene(s.cameras[0], 1.0f, s.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(s.cameras[0], 1.0f, s.bounds);
 
     int shadowProbes = 0, litProbes = 0;
     for (int y = 1; y < kSize; y += 3) {

@@ -6,7 +6,7 @@
 
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneDefaults.h"
 
@@ -18,7 +18,7 @@ namespace {
 class SponzaGpuTest : public GpuTest {};
 
 // Inside the atrium, looking down its long axis (the camera the docs use).
-render::Image renderSponza(const std::string& path, render::GiMode mode, int width, int height) {
+core::Image renderSponza(const std::string& path, render::GiMode mode, int width, int height) {
     scene::Scene scene;
     std::string error;
     std::vector<std::string> warnings;
@@ -40,7 +40,7 @@ render::Image renderSponza(const std::string& path, render::GiMode mode, int wid
         ADD_FAILURE() << error;
         return {};
     }
-    const render::CameraView camera = render::cameraLookAt({0.0f, 2.0f, 14.0f}, {0.0f, 4.0f, -10.0f},
+    const scene::CameraView camera = scene::cameraLookAt({0.0f, 2.0f, 14.0f}, {0.0f, 4.0f, -10.0f},
             glm::radians(60.0f), float(width) / float(height), scene.bounds);
     gl::GpuProfiler profiler;
     renderer.render(camera, {width, height}, render::OutputComponent::Final, profiler);
@@ -50,9 +50,9 @@ render::Image renderSponza(const std::string& path, render::GiMode mode, int wid
 TEST_F(SponzaGpuTest, DirectLightGolden) {
     const std::string path = sponzaPathOrSkip();
     if (path.empty()) GTEST_SKIP() << "Sponza not provided";
-    const render::Image image = renderSponza(path, render::GiMode::Direct, 256, 144);
+    const core::Image image = renderSponza(path, render::GiMode::Direct, 256, 144);
     ASSERT_FALSE(image.empty());
-    EXPECT_TRUE(render::allFinite(image));
+    EXPECT_TRUE(core::allFinite(image));
     // Mipmapped textures minified differently by llvmpipe threads and sub-pixel geometry
     // (chains, plant leaves) flicker between runs: allow 1% of pixels over 6/255.
     ImageTolerance tolerance;
@@ -64,10 +64,10 @@ TEST_F(SponzaGpuTest, DirectLightGolden) {
 TEST_F(SponzaGpuTest, VoxelGiEndsWithFinitePixels) {
     const std::string path = sponzaPathOrSkip();
     if (path.empty()) GTEST_SKIP() << "Sponza not provided";
-    const render::Image direct = renderSponza(path, render::GiMode::Direct, 96, 54);
-    const render::Image voxel = renderSponza(path, render::GiMode::Voxel, 96, 54);
+    const core::Image direct = renderSponza(path, render::GiMode::Direct, 96, 54);
+    const core::Image voxel = renderSponza(path, render::GiMode::Voxel, 96, 54);
     ASSERT_FALSE(voxel.empty());
-    EXPECT_TRUE(render::allFinite(voxel));
+    EXPECT_TRUE(core::allFinite(voxel));
     double sumDirect = 0.0, sumVoxel = 0.0;
     for (float v : direct.rgb) sumDirect += v;
     for (float v : voxel.rgb) sumVoxel += v;

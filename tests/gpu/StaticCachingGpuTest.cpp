@@ -23,12 +23,12 @@ namespace {
 
 constexpr int kSize = 64;
 
-render::CameraView cameraOf(const scene::Scene& scene) {
-    return render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+scene::CameraView cameraOf(const scene::Scene& scene) {
+    return scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
 }
 
 // Mean |a - b| over the mean |b| of every channel.
-double relativeDifference(const render::Image& a, const render::Image& b) {
+double relativeDifference(const core::Image& a, const core::Image& b) {
     EXPECT_EQ(a.rgb.size(), b.rgb.size());
     double diff = 0.0, total = 0.0;
     for (std::size_t i = 0; i < std::min(a.rgb.size(), b.rgb.size()); ++i) {
@@ -38,7 +38,7 @@ double relativeDifference(const render::Image& a, const render::Image& b) {
     return total > 0.0 ? diff / total : diff;
 }
 
-double mean(const render::Image& image) {
+double mean(const core::Image& image) {
     double sum = 0.0;
     for (const float value : image.rgb) sum += double(value);
     return image.rgb.empty() ? 0.0 : sum / double(image.rgb.size());
@@ -51,7 +51,7 @@ public:
         EXPECT_TRUE(mRenderer.init(scene, settings, mShaders, error)) << error;
         EXPECT_TRUE(mRenderer.setMode(render::GiMode::Voxel, error)) << error;
     }
-    render::Image frame(const render::CameraView& camera,
+    core::Image frame(const scene::CameraView& camera,
             render::OutputComponent output = render::OutputComponent::Indirect) {
         gl::GpuProfiler profiler;
         mRenderer.render(camera, {kSize, kSize}, output, profiler);
@@ -81,9 +81,9 @@ class StaticCachingGpuTest : public GpuTest {};
 
 TEST_F(StaticCachingGpuTest, StillCameraReusesTheVoxelsAndMatchesTheFullPath) {
     const scene::Scene box = loadCornellBox();
-    const render::CameraView camera = cameraOf(box);
+    const scene::CameraView camera = cameraOf(box);
     Renderer cached(box, withCache(true)), full(box, withCache(false));
-    render::Image kept, redone;
+    core::Image kept, redone;
     for (int i = 0; i < 3; ++i) {
         kept = cached.frame(camera);
         redone = full.frame(camera);
@@ -99,7 +99,7 @@ TEST_F(StaticCachingGpuTest, StillCameraReusesTheVoxelsAndMatchesTheFullPath) {
 TEST_F(StaticCachingGpuTest, CascadeIsRedoneWhenItsPlacementMovesAndLightsChange) {
     const scene::Scene box = loadCornellBox();
     Renderer cached(box, withCache(true)), full(box, withCache(false));
-    render::CameraView camera = cameraOf(box);
+    scene::CameraView camera = cameraOf(box);
     // Both size their cascade from this first camera (voxel.extent=0).
     (void)cached.frame(camera);
     (void)full.frame(camera);
@@ -109,29 +109,29 @@ TEST_F(StaticCachingGpuTest, CascadeIsRedoneWhenItsPlacementMovesAndLightsChange
     EXPECT_EQ(cached.reused(), 1u);
     // Half a metre: every level moves, so the voxels are redone for the new placement.
     camera.eye += glm::vec3(0.0f, 0.0f, 0.5f);
-    const render::Image moved = cached.frame(camera);
+    const core::Image moved = cached.frame(camera);
     EXPECT_EQ(cached.reused(), 1u);
     EXPECT_LT(relativeDifference(moved, full.frame(camera)), 0.01);
     // Twice the light: injected again, twice the indirect light.
     std::vector<scene::Light> brighter = box.lights;
     for (scene::Light& light : brighter) light.intensity *= 2.0f;
     cached.renderer().setLights(brighter);
-    const render::Image lit = cached.frame(camera);
+    const core::Image lit = cached.frame(camera);
     EXPECT_EQ(cached.reused(), 1u);
     EXPECT_NEAR(mean(lit) / mean(moved), 2.0, 0.04);
 }
 
 TEST_F(StaticCachingGpuTest, AnimatedCubeIsRevoxelizedOnTopOfTheKeptStaticPart) {
     scene::Scene moving = loadTestScene("assets/cornell_box/cornell_box_animated.gltf");
-    const render::CameraView camera = cameraOf(moving);
+    const scene::CameraView camera = cameraOf(moving);
     Renderer cached(moving, withCache(true)), full(moving, withCache(false));
     double worst = 0.0;
     for (const double seconds : {0.0, 0.5, 1.0, 2.0}) {
         scene::poseScene(moving, seconds);
         cached.renderer().setPose(moving);
         full.renderer().setPose(moving);
-        const render::Image a = cached.frame(camera, render::OutputComponent::Final);
-        const render::Image b = full.frame(camera, render::OutputComponent::Final);
+        const core::Image a = cached.frame(camera, render::OutputComponent::Final);
+        const core::Image b = full.frame(camera, render::OutputComponent::Final);
         worst = std::max(worst, relativeDifference(a, b));
     }
     EXPECT_EQ(cached.reused(), 0u) << "moving geometry is voxelized and lit every frame";

@@ -22,7 +22,7 @@
 #include "gl/ShaderLibrary.h"
 #include "reference/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "render/FrameRenderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -73,20 +73,20 @@ const reference::ReferenceResult& cornellTruth() {
         ReferenceSettings settings;
         settings.spp = kReferenceSpp;
         settings.bounces = 1;
-        const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+        const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
         return reference::renderReference(scene, camera, kSize, kSize, settings);
     }();
     return truth;
 }
 
 // The voxel-GI indirect component of `scene` from its camera 0.
-render::Image voxelIndirect(const scene::Scene& scene, const Settings& settings) {
+core::Image voxelIndirect(const scene::Scene& scene, const Settings& settings) {
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
     std::string error;
     EXPECT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
     EXPECT_TRUE(renderer.setMode(render::GiMode::Voxel, error)) << error;
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
     gl::GpuProfiler profiler;
     renderer.render(camera, {kSize, kSize}, render::OutputComponent::Indirect, profiler);
     profiler.flush();
@@ -109,7 +109,7 @@ Score scoreSetting(const Settings& settings) {
     const scene::Scene base = loadCornellBox();
     Score score;
     for (int k = 0; k < kPhases; ++k) {
-        const render::Image image = voxelIndirect(shifted(base, phaseOffset(k)), settings);
+        const core::Image image = voxelIndirect(shifted(base, phaseOffset(k)), settings);
         const reference::ImageErrors errors =
                 reference::measureImageError(image, truth.indirect, truth.coverage);
         score.rmse.push_back(errors.relativeRmse);

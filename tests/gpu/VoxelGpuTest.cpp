@@ -43,7 +43,7 @@ public:
         std::string error;
         EXPECT_TRUE(mRenderer.init(scene, settings, mShaders, error)) << error;
         EXPECT_TRUE(mRenderer.setMode(render::GiMode::Voxel, error)) << error;
-        const render::CameraView camera = render::cameraFromScene(scene.cameras[0],
+        const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0],
                 float(size.x) / float(size.y), scene.bounds);
         gl::GpuProfiler profiler;
         mRenderer.render(camera, size, output, profiler);
@@ -52,7 +52,7 @@ public:
     const voxel::VoxelizationManager& manager() const {
         return static_cast<const voxel::VoxelizationManager&>(*mRenderer.technique());
     }
-    render::Image image() const { return mRenderer.readback(); }
+    core::Image image() const { return mRenderer.readback(); }
     // The factor the volumes' irradiance carries (scene/Exposure.h).
     float exposure() const { return mRenderer.gpuScene().exposure(); }
 
@@ -362,8 +362,8 @@ TEST_F(VoxelGpuTest, MemoryMatchesAllocationAndThesisBudget) {
 TEST_F(VoxelGpuTest, CornellFloorBleedsWallColours) {
     const scene::Scene scene = loadCornellBox();
     VoxelFrame frame(scene, Settings{}, {96, 96}, render::OutputComponent::Indirect);
-    const render::Image image = frame.image();
-    ASSERT_TRUE(render::allFinite(image));
+    const core::Image image = frame.image();
+    ASSERT_TRUE(core::allFinite(image));
     auto regionMean = [&](int x0, int x1, int y0, int y1) {
         glm::dvec3 sum(0.0);
         for (int y = y0; y < y1; ++y)
@@ -393,7 +393,7 @@ TEST_F(VoxelGpuTest, OffscreenWallStillLightsTheFloor) {
         settings.specular = 0.0f;
         constexpr int kSize = 32;
         VoxelFrame frame(scene, settings, {kSize, kSize}, render::OutputComponent::Indirect);
-        const render::Image image = frame.image();
+        const core::Image image = frame.image();
         glm::dvec3 sum(0.0);
         for (int y = 12; y < 20; ++y)
             for (int x = 12; x < 20; ++x) sum += glm::dvec3(image.at(x, y));
@@ -421,11 +421,11 @@ TEST_F(VoxelGpuTest, CornellIndirectEnergyMatchesReference) {
     settings.specular = 0.0f;
     constexpr int kSize = 96;
     VoxelFrame frame(scene, settings, {kSize, kSize}, render::OutputComponent::Indirect);
-    const render::Image voxel = frame.image();
+    const core::Image voxel = frame.image();
     ReferenceSettings referenceSettings;
     referenceSettings.spp = 64;
     referenceSettings.bounces = 1;
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
     const reference::ReferenceResult truth =
             reference::renderReference(scene, camera, kSize, kSize, referenceSettings);
     ASSERT_FALSE(truth.indirect.empty());
@@ -451,8 +451,8 @@ TEST_P(VoxelGoldenGpuTest, CornellView) {
     Settings settings;
     settings.voxel.debugLevel = GetParam().level;
     VoxelFrame frame(scene, settings, {128, 128}, GetParam().output);
-    const render::Image image = frame.image();
-    ASSERT_TRUE(render::allFinite(image));
+    const core::Image image = frame.image();
+    ASSERT_TRUE(core::allFinite(image));
     // Spinlock order changes half-float rounding of the running averages between runs, and
     // cone tracing magnifies it slightly: allow 0.5% of pixels over 6/255 and a mean of 1/255.
     ImageTolerance tolerance;

@@ -2,7 +2,7 @@
 
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
 #include "scene/SceneDefaults.h"
 
@@ -58,7 +58,7 @@ std::string sourcePath(const std::string& relative) {
     return std::string(VOXATLAS_DATA_DIR) + "/" + relative;
 }
 
-render::Image renderScene(const RenderRequest& request) {
+core::Image renderScene(const RenderRequest& request) {
     const std::string path = request.scenePath.empty() || request.scenePath[0] == '/'
                                      ? request.scenePath
                                      : sourcePath(request.scenePath);
@@ -73,7 +73,7 @@ render::Image renderScene(const RenderRequest& request) {
     return renderScene(scene, request);
 }
 
-render::Image renderScene(const scene::Scene& scene, const RenderRequest& request) {
+core::Image renderScene(const scene::Scene& scene, const RenderRequest& request) {
     std::string error;
     if (request.cameraIndex >= int(scene.cameras.size())) {
         ADD_FAILURE() << "the scene has no camera " << request.cameraIndex;
@@ -85,7 +85,7 @@ render::Image renderScene(const scene::Scene& scene, const RenderRequest& reques
         ADD_FAILURE() << error;
         return {};
     }
-    const render::CameraView camera = render::cameraFromScene(
+    const scene::CameraView camera = scene::cameraFromScene(
             scene.cameras[std::size_t(request.cameraIndex)],
             float(request.width) / float(request.height), scene.bounds);
     gl::GpuProfiler profiler;
@@ -98,7 +98,7 @@ render::Image renderScene(const scene::Scene& scene, const RenderRequest& reques
 
 namespace gi::test {
 
-bool pixelOnPlaneY(const render::CameraView& camera, int width, int height, int x, int y,
+bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x, int y,
         float planeY, glm::vec3& point) {
     const glm::mat4 clipToWorld = glm::inverse(camera.viewProjection());
     const glm::vec2 ndc((float(x) + 0.5f) / float(width) * 2.0f - 1.0f,

@@ -5,10 +5,10 @@
 #pragma once
 
 #include "platform/GlContext.h"
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "render/FrameRenderer.h"
-#include "render/Image.h"
-#include "render/Settings.h"
+#include "core/Image.h"
+#include "core/Settings.h"
 #include "scene/Scene.h"
 
 #include <gtest/gtest.h>
@@ -39,14 +39,14 @@ struct RenderRequest {
 
 // Loads, renders and reads back one frame with the current context. Fails the test (and
 // returns an empty image) on any error.
-[[nodiscard]] render::Image renderScene(const RenderRequest& request);
+[[nodiscard]] core::Image renderScene(const RenderRequest& request);
 
 // Renders a scene built in code (lights and cameras as given; no defaults are added).
-[[nodiscard]] render::Image renderScene(const scene::Scene& scene, const RenderRequest& request);
+[[nodiscard]] core::Image renderScene(const scene::Scene& scene, const RenderRequest& request);
 
 // World-space point seen through the centre of pixel (x, y) on the plane y = planeY, or
 // false if the pixel's ray misses it. Images run top to bottom.
-[[nodiscard]] bool pixelOnPlaneY(const render::CameraView& camera, int width, int height, int x,
+[[nodiscard]] bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x,
         int y, float planeY, glm::vec3& point);
 
 // Sponza's glTF: $VOXATLAS_SPONZA, else ../shared/assets/sponza/Sponza.gltf beside the source

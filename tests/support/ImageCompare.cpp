@@ -1,6 +1,7 @@
 #include "ImageCompare.h"
+#include "core/Colour.h"
 
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 #include "scene/Scene.h"
 
 #include <algorithm>
@@ -12,7 +13,7 @@
 namespace gi::test {
 namespace {
 
-int encode8(float linear) { return int(std::lround(scene::linearToSrgb(linear) * 255.0f)); }
+int encode8(float linear) { return int(std::lround(core::linearToSrgb(linear) * 255.0f)); }
 
 std::string referencePath(const std::string& name) {
     return std::string(VOXATLAS_TEST_DATA_DIR) + "/references/" + name + ".png";
@@ -26,7 +27,7 @@ std::string testOutputDir() {
     return dir;
 }
 
-ImageDifference compareImages(const render::Image& actual, const render::Image& expected,
+ImageDifference compareImages(const core::Image& actual, const core::Image& expected,
         int pixelThreshold) {
     ImageDifference d;
     if (actual.width != expected.width || actual.height != expected.height) {
@@ -54,39 +55,39 @@ ImageDifference compareImages(const render::Image& actual, const render::Image& 
     return d;
 }
 
-void writeDiagnostics(const std::string& name, const render::Image& actual,
-        const render::Image* expected) {
+void writeDiagnostics(const std::string& name, const core::Image& actual,
+        const core::Image* expected) {
     const std::string base = testOutputDir() + "/" + name;
     std::filesystem::create_directories(std::filesystem::path(base).parent_path());
     std::string error;
-    (void)render::writePng(base + ".actual.png", actual, error);
+    (void)core::writePng(base + ".actual.png", actual, error);
     if (!expected || expected->width != actual.width || expected->height != actual.height) return;
-    (void)render::writePng(base + ".expected.png", *expected, error);
-    render::Image diff(actual.width, actual.height);
+    (void)core::writePng(base + ".expected.png", *expected, error);
+    core::Image diff(actual.width, actual.height);
     for (std::size_t i = 0; i < diff.rgb.size(); ++i) {
         // Differences amplified 8x in encoded space, shown as linear for the PNG writer.
-        const float d = std::abs(scene::linearToSrgb(actual.rgb[i]) - scene::linearToSrgb(expected->rgb[i]));
-        diff.rgb[i] = scene::srgbToLinear(std::min(1.0f, d * 8.0f));
+        const float d = std::abs(core::linearToSrgb(actual.rgb[i]) - core::linearToSrgb(expected->rgb[i]));
+        diff.rgb[i] = core::srgbToLinear(std::min(1.0f, d * 8.0f));
     }
-    (void)render::writePng(base + ".diff.png", diff, error);
+    (void)core::writePng(base + ".diff.png", diff, error);
 }
 
-std::string compareWithReference(const render::Image& actual, const std::string& name,
+std::string compareWithReference(const core::Image& actual, const std::string& name,
         const ImageTolerance& tolerance) {
     const std::string path = referencePath(name);
     const char* update = std::getenv("VOXATLAS_UPDATE_REFERENCES");
     if (update && std::string(update) == "1") {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path());
         std::string error;
-        if (!render::writePng(path, actual, error)) return "cannot update reference: " + error;
+        if (!core::writePng(path, actual, error)) return "cannot update reference: " + error;
         return "";
     }
     std::string lastMessage;
     for (const std::string& candidate : {path, referencePath(name + "_1")}) {
         if (!std::filesystem::exists(candidate)) continue;
-        render::Image expected;
+        core::Image expected;
         std::string error;
-        if (!render::readPng(candidate, expected, error)) return error;
+        if (!core::readPng(candidate, expected, error)) return error;
         const ImageDifference d = compareImages(actual, expected, tolerance.pixelThreshold);
         std::ostringstream message;
         if (d.sizeMismatch) {

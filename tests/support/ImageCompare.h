@@ -6,7 +6,7 @@
 // rewrites baselines deliberately.
 #pragma once
 
-#include "render/Image.h"
+#include "core/Image.h"
 
 #include <string>
 
@@ -30,18 +30,18 @@ struct ImageDifference {
     bool sizeMismatch = false;
 };
 
-[[nodiscard]] ImageDifference compareImages(const render::Image& actual,
-        const render::Image& expected, int pixelThreshold);
+[[nodiscard]] ImageDifference compareImages(const core::Image& actual,
+        const core::Image& expected, int pixelThreshold);
 
 // Compares with tests/references/<name>.png (or an allowed alternate <name>_1.png).
 // Returns an empty string on success, else a message with the three numbers and the files.
-[[nodiscard]] std::string compareWithReference(const render::Image& actual,
+[[nodiscard]] std::string compareWithReference(const core::Image& actual,
         const std::string& name, const ImageTolerance& tolerance = {});
 
 // Writes the actual image, the expected one and an amplified difference image to
 // <build>/test-output/<name>.{actual,expected,diff}.png.
-void writeDiagnostics(const std::string& name, const render::Image& actual,
-        const render::Image* expected);
+void writeDiagnostics(const std::string& name, const core::Image& actual,
+        const core::Image* expected);
 
 [[nodiscard]] std::string testOutputDir();
 

@@ -1,6 +1,6 @@
 // The atlas.* keys: defaults (the thesis' 100 samples), word-valued settings that also take
 // their numbers, and clean refusals.
-#include "render/Settings.h"
+#include "core/Settings.h"
 
 #include <gtest/gtest.h>
 

@@ -29,8 +29,8 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, float eps = 
     EXPECT_NEAR(actual.z, expected.z, eps) << "z";
 }
 
-render::CameraView lookAt(const glm::vec3& eye, const glm::vec3& target, const scene::Aabb& b) {
-    return render::cameraLookAt(eye, target, glm::radians(40.0f), 1.0f, b);
+scene::CameraView lookAt(const glm::vec3& eye, const glm::vec3& target, const scene::Aabb& b) {
+    return scene::cameraLookAt(eye, target, glm::radians(40.0f), 1.0f, b);
 }
 
 TEST(FlyCamera, StartsFromTheGivenCamera) {
@@ -138,7 +138,7 @@ TEST(FlyCamera, MouseLookTurnsAndClampsPitch) {
     input.mouseDelta = {0.0f, 1e6f};
     camera.update(input, 0.016f);
     EXPECT_NEAR(camera.pitch(), -FlyCamera::kMaxPitch, kEps);
-    const render::CameraView view = camera.view(1.5f);
+    const scene::CameraView view = camera.view(1.5f);
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(view.view[c][r]));
     }
@@ -154,11 +154,11 @@ TEST(FlyCamera, KeepsTheStartViewUntilMoved) {
     sceneCamera.yfov = 0.7f;
     sceneCamera.znear = 0.5f;
     sceneCamera.zfar = 40.0f;
-    const render::CameraView start = render::cameraFromScene(sceneCamera, 1.0f, bounds);
+    const scene::CameraView start = scene::cameraFromScene(sceneCamera, 1.0f, bounds);
     FlyCamera camera(start, bounds);
     FlyInput still;
     camera.update(still, 0.5f);
-    const render::CameraView view = camera.view(2.0f);
+    const scene::CameraView view = camera.view(2.0f);
     EXPECT_TRUE(camera.atStart());
     EXPECT_EQ(view.view, start.view);
     EXPECT_FLOAT_EQ(view.aspect, 2.0f);
@@ -170,7 +170,7 @@ TEST(FlyCamera, KeepsTheStartViewUntilMoved) {
     move.forward = true;
     camera.update(move, 0.1f);
     EXPECT_FALSE(camera.atStart());
-    const render::CameraView moved = camera.view(2.0f);
+    const scene::CameraView moved = camera.view(2.0f);
     EXPECT_FLOAT_EQ(moved.yfov, 0.7f);
     EXPECT_FLOAT_EQ(moved.aspect, 2.0f);
     expectNear(moved.eye, camera.position());
@@ -187,7 +187,7 @@ TEST(FlyCamera, StraightDownKeepsItsHeading) {
     // Looking straight down (-Y) with the camera's up vector pointing to +X: heading +X.
     sceneCamera.worldFromCamera = glm::mat4(glm::vec4(0, 0, 1, 0), glm::vec4(1, 0, 0, 0),
             glm::vec4(0, 1, 0, 0), glm::vec4(0, 5, 0, 1));
-    const FlyCamera camera(render::cameraFromScene(sceneCamera, 1.0f, bounds), bounds);
+    const FlyCamera camera(scene::cameraFromScene(sceneCamera, 1.0f, bounds), bounds);
     EXPECT_NEAR(camera.pitch(), -FlyCamera::kMaxPitch, kEps);
     EXPECT_NEAR(camera.yaw(), glm::half_pi<float>(), kEps);
 }

@@ -1,4 +1,4 @@
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 
 #include "ImageCompare.h"
 #include "Process.h"
@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-namespace gi::render {
+namespace gi::core {
 namespace {
 
 Image gradient(int w, int h) {
@@ -88,4 +88,4 @@ TEST(ImageCompare, CountsFailingPixelsAndMeans) {
 }
 
 } // namespace
-} // namespace gi::render
+} // namespace gi::core

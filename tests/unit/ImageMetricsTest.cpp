@@ -11,8 +11,8 @@
 namespace gi::reference {
 namespace {
 
-render::Image constantImage(int w, int h, const glm::vec3& value) {
-    render::Image image(w, h);
+core::Image constantImage(int w, int h, const glm::vec3& value) {
+    core::Image image(w, h);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) image.set(x, y, value);
     }
@@ -23,7 +23,7 @@ render::Image constantImage(int w, int h, const glm::vec3& value) {
 constexpr double kEps = 1e-12;
 
 TEST(ImageMetrics, IdenticalImagesHaveZeroError) {
-    const render::Image a = constantImage(4, 3, {0.5f, 1.0f, 2.0f});
+    const core::Image a = constantImage(4, 3, {0.5f, 1.0f, 2.0f});
     const ImageErrors errors = measureImageError(a, a);
     EXPECT_EQ(errors.pixels, 12u);
     EXPECT_DOUBLE_EQ(errors.relativeRmse, 0.0);
@@ -34,7 +34,7 @@ TEST(ImageMetrics, IdenticalImagesHaveZeroError) {
 
 TEST(ImageMetrics, UniformScaleGivesRelativeErrorAndEnergyRatio) {
     // a = 1.1 b everywhere: relative RMSE = sqrt(sum (0.1 b)^2 / sum b^2) = 0.1, ratio 1.1.
-    render::Image b(2, 2), a(2, 2);
+    core::Image b(2, 2), a(2, 2);
     const glm::vec3 values[4] = {{1, 2, 3}, {0.5f, 0.25f, 4}, {8, 1, 0}, {2, 2, 2}};
     for (int i = 0; i < 4; ++i) {
         b.set(i % 2, i / 2, values[i]);
@@ -50,8 +50,8 @@ TEST(ImageMetrics, HandComputedValues) {
     // b = 1 everywhere (2 pixels); a = (1,1,1) and (1,1,3): one channel off by 2.
     // sum (a-b)^2 = 4, sum b^2 = 6 -> relative RMSE sqrt(4/6); RMSE sqrt(4/6) too (n = 2,
     // 3 channels); ratio (3 + 5) / 6; max abs 2.
-    render::Image b = constantImage(2, 1, glm::vec3(1.0f));
-    render::Image a = b;
+    core::Image b = constantImage(2, 1, glm::vec3(1.0f));
+    core::Image a = b;
     a.set(1, 0, {1, 1, 3});
     const ImageErrors errors = measureImageError(a, b);
     EXPECT_NEAR(errors.relativeRmse, std::sqrt(4.0 / 6.0), kEps);
@@ -62,8 +62,8 @@ TEST(ImageMetrics, HandComputedValues) {
 
 TEST(ImageMetrics, MaskSelectsGeometryPixels) {
     // Pixel 1 differs hugely but its coverage is 0.5: it is not a geometry pixel.
-    render::Image b = constantImage(3, 1, glm::vec3(2.0f));
-    render::Image a = b;
+    core::Image b = constantImage(3, 1, glm::vec3(2.0f));
+    core::Image a = b;
     a.set(1, 0, glm::vec3(100.0f));
     a.set(2, 0, glm::vec3(3.0f));
     const std::vector<float> coverage = {1.0f, 0.5f, 1.0f};
@@ -81,8 +81,8 @@ TEST(ImageMetrics, MaskSelectsGeometryPixels) {
 }
 
 TEST(ImageMetrics, DegenerateInputs) {
-    const render::Image zero = constantImage(2, 2, glm::vec3(0.0f));
-    const render::Image one = constantImage(2, 2, glm::vec3(1.0f));
+    const core::Image zero = constantImage(2, 2, glm::vec3(0.0f));
+    const core::Image one = constantImage(2, 2, glm::vec3(1.0f));
     ImageErrors errors = measureImageError(zero, zero);
     EXPECT_DOUBLE_EQ(errors.relativeRmse, 0.0);
     EXPECT_DOUBLE_EQ(errors.energyRatio, 1.0);
@@ -101,7 +101,7 @@ TEST(ImageMetrics, DegenerateInputs) {
     EXPECT_EQ(errors.pixels, 0u);
     EXPECT_TRUE(std::isnan(errors.relativeRmse));
 
-    render::Image bad = one;
+    core::Image bad = one;
     bad.rgb[0] = std::numeric_limits<float>::quiet_NaN();
     errors = measureImageError(bad, one);
     EXPECT_TRUE(std::isnan(errors.relativeRmse));

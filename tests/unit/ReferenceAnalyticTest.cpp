@@ -9,6 +9,7 @@
 // - alpha-mask cut-outs in camera and shadow rays, sRGB texture decoding;
 // - determinism across thread counts.
 #include "ReferenceTestScenes.h"
+#include "core/Colour.h"
 #include "reference/ReferenceRenderer.h"
 #include "scene/GltfLoader.h"
 
@@ -78,7 +79,7 @@ double punctualIrradiance(const scene::Light& light, const glm::dvec3& x, const 
 // Mean of f over the pixel's footprint on the plane y = 0 (n x n sub-positions); false when a
 // sub-position misses the square |x|, |z| <= halfSize.
 template <class F>
-bool footprintMean(const render::CameraView& camera, int width, int height, int px, int py,
+bool footprintMean(const scene::CameraView& camera, int width, int height, int px, int py,
         double halfSize, int n, F f, double& mean) {
     double sum = 0.0;
     for (int j = 0; j < n; ++j) {
@@ -119,8 +120,8 @@ void expectPlaneMatches(scene::Light light, double minimumRadiance, float scale 
     scene.cameras[0].znear *= scale;
     scene.cameras[0].zfar *= scale;
     constexpr int kWidth = 64, kHeight = 48;
-    const render::CameraView camera =
-            render::cameraFromScene(scene.cameras[0], float(kWidth) / kHeight, scene.bounds);
+    const scene::CameraView camera =
+            scene::cameraFromScene(scene.cameras[0], float(kWidth) / kHeight, scene.bounds);
     // 64 paths per pixel: direct light has no Monte Carlo noise except the jitter over the
     // pixel, whose effect on the pixel mean is ~0.1 % where the field is steepest.
     const ReferenceResult result =
@@ -219,7 +220,7 @@ void expectClosedBox(float scale, int bounces) {
     const float rho = 0.5f;
     const glm::vec3 le(1.0f, 0.5f, 0.25f);
     const scene::Scene box = test::closedBox(glm::vec3(rho), le, scale);
-    const render::CameraView camera = render::cameraLookAt(glm::vec3(0.3f, -0.2f, 0.1f) * scale,
+    const scene::CameraView camera = scene::cameraLookAt(glm::vec3(0.3f, -0.2f, 0.1f) * scale,
             glm::vec3(1.0f, 0.6f, -0.8f) * scale, glm::radians(100.0f), 1.0f, box.bounds);
     constexpr int kSize = 24;
     const ReferenceResult result =
@@ -296,7 +297,7 @@ void expectFluxBalance(const scene::Light& light, double flux, int bounces) {
     const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     double direct = 0.0, indirect = 0.0, noise = 0.0;
     for (const glm::vec3& axis : axes) {
-        const render::CameraView camera = render::cameraLookAt(glm::vec3(0.0f), axis,
+        const scene::CameraView camera = scene::cameraLookAt(glm::vec3(0.0f), axis,
                 glm::radians(90.0f), 1.0f, box.bounds);
         const ReferenceResult result =
                 renderer.render(camera, kSize, kSize, referenceSettings(64, bounces));
@@ -411,7 +412,7 @@ void expectSquareEmitterMatches(float scale, int spp) {
             {half, height, half}, {-half, height, half}};
 
     constexpr int kSize = 48;
-    const render::CameraView camera = render::cameraLookAt(glm::vec3(0.0f, 0.45f, 1.2f) * scale,
+    const scene::CameraView camera = scene::cameraLookAt(glm::vec3(0.0f, 0.45f, 1.2f) * scale,
             glm::vec3(0.0f, 0.0f, -0.1f) * scale, glm::radians(50.0f), 1.0f, scene.bounds);
     const ReferenceResult result =
             renderReference(scene, camera, kSize, kSize, referenceSettings(spp, 1));
@@ -504,11 +505,11 @@ TEST(ReferenceAnalytic, AlphaMaskCutsOutCameraAndShadowRays) {
     scene.lights.push_back(sun);
 
     constexpr int kSize = 32;
-    const render::CameraView camera = render::cameraLookAt(glm::vec3(0, 0, 3), glm::vec3(0),
+    const scene::CameraView camera = scene::cameraLookAt(glm::vec3(0, 0, 3), glm::vec3(0),
             glm::radians(30.0f), 1.0f, scene.bounds);
     const ReferenceResult result =
             renderReference(scene, camera, kSize, kSize, referenceSettings(16, 1));
-    const double texel = double(scene::srgbToLinear(188.0f / 255.0f));
+    const double texel = double(core::srgbToLinear(188.0f / 255.0f));
     int left = 0, right = 0;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -553,7 +554,7 @@ TEST(ReferenceAnalytic, ImageIsIdenticalForAnyThreadCount) {
             << error;
     ASSERT_FALSE(scene.cameras.empty());
     constexpr int kSize = 40;
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
     const ReferenceRenderer renderer(scene);
     ASSERT_TRUE(renderer.valid()) << renderer.error();
     const ReferenceResult one =

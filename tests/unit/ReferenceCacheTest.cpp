@@ -46,7 +46,7 @@ scene::Scene smallScene() {
 
 struct Fixture {
     scene::Scene scene = smallScene();
-    render::CameraView camera = render::cameraLookAt(glm::vec3(0, 1, 3), glm::vec3(0, 0.5f, 0),
+    scene::CameraView camera = scene::cameraLookAt(glm::vec3(0, 1, 3), glm::vec3(0, 0.5f, 0),
             glm::radians(45.0f), 4.0f / 3.0f, scene.bounds);
     ReferenceSettings settings;
     Fixture() {
@@ -220,7 +220,7 @@ TEST(ReferenceRenderer, DegenerateRequests) {
     one.spp = 1;
     const ReferenceResult single = renderReference(f.scene, f.camera, 8, 6, one);
     EXPECT_TRUE(std::isnan(single.noise.final)) << "no second half to compare with";
-    EXPECT_TRUE(render::allFinite(single.final));
+    EXPECT_TRUE(core::allFinite(single.final));
     const scene::Scene empty;
     const ReferenceResult nothing = renderReference(empty, f.camera, 8, 6, f.settings);
     ASSERT_EQ(nothing.width(), 8);

@@ -5,7 +5,7 @@
 // Run it with: voxatlas_unit_tests --gtest_also_run_disabled_tests
 //              --gtest_filter='ReferenceCornell.DISABLED_*'
 #include "reference/ReferenceRenderer.h"
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 #include "scene/GltfLoader.h"
 
 #include <gtest/gtest.h>
@@ -53,14 +53,14 @@ TEST(ReferenceCornell, NoiseFallsWithSamples) {
     const scene::Scene scene = loadCornellBox();
     ASSERT_FALSE(scene.cameras.empty());
     constexpr int kSize = 48;
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
     const ReferenceRenderer renderer(scene);
     ASSERT_TRUE(renderer.valid()) << renderer.error();
     const ReferenceResult low = renderer.render(camera, kSize, kSize, settingsFor(16, 0));
     const ReferenceResult high = renderer.render(camera, kSize, kSize, settingsFor(256, 0));
     print(low);
     print(high);
-    EXPECT_TRUE(render::allFinite(high.final));
+    EXPECT_TRUE(core::allFinite(high.final));
     // 16 times the paths: plain Monte Carlo noise falls 4x, stratified (Sobol') samples up
     // to 16^1.5 = 64x for smooth integrands; measured ~8x. Bounds 3x..40x leave room for the
     // estimate's own scatter while catching an estimate that does not respond to spp.
@@ -79,7 +79,7 @@ TEST(ReferenceCornell, DISABLED_SamplesForOnePercentNoiseAt256) {
     const scene::Scene scene = loadCornellBox();
     ASSERT_FALSE(scene.cameras.empty());
     constexpr int kSize = 256;
-    const render::CameraView camera = render::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
     const ReferenceRenderer renderer(scene);
     ASSERT_TRUE(renderer.valid()) << renderer.error();
     std::printf("[ cornell  ] Embree build %.3f s\n", renderer.buildSeconds());
@@ -104,10 +104,10 @@ TEST(ReferenceCornell, DISABLED_SamplesForOnePercentNoiseAt256) {
     const std::string out = std::string(VOXATLAS_TEST_OUTPUT_DIR) + "/reference-cornell";
     std::filesystem::create_directories(out);
     std::string error;
-    EXPECT_TRUE(render::writeHdr(out + "/final.pfm", last.final, error)) << error;
-    EXPECT_TRUE(render::writeHdr(out + "/indirect.pfm", last.indirect, error)) << error;
-    EXPECT_TRUE(render::writePng(out + "/final.png", last.final, error)) << error;
-    EXPECT_TRUE(render::writePng(out + "/indirect.png", last.indirect, error)) << error;
+    EXPECT_TRUE(core::writeHdr(out + "/final.pfm", last.final, error)) << error;
+    EXPECT_TRUE(core::writeHdr(out + "/indirect.pfm", last.indirect, error)) << error;
+    EXPECT_TRUE(core::writePng(out + "/final.png", last.final, error)) << error;
+    EXPECT_TRUE(core::writePng(out + "/indirect.png", last.indirect, error)) << error;
     std::printf("[ cornell  ] images in %s\n", out.c_str());
     EXPECT_TRUE(finalReached && indirectReached);
 }

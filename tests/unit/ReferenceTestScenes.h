@@ -5,7 +5,7 @@
 // the mean radiance over its square).
 #pragma once
 
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -67,7 +67,7 @@ struct PixelRay {
 };
 
 // The ray through image point (x, y), x in [0, width), y in [0, height) from the top.
-inline PixelRay pixelRay(const render::CameraView& camera, int width, int height, double x,
+inline PixelRay pixelRay(const scene::CameraView& camera, int width, int height, double x,
         double y) {
     const glm::dmat4 clipToWorld =
             glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));

@@ -1,5 +1,7 @@
 #include "gi/atlas/AtlasCache.h"
 
+#include "core/Hasher.h"
+
 #include <unistd.h>
 
 #include <bit>
@@ -13,60 +15,9 @@
 namespace gi::atlas {
 namespace {
 
+using core::Hasher;
+
 constexpr char kMagic[8] = {'V', 'X', 'A', 'T', 'L', 'A', 'S', '\0'};
-
-std::uint64_t mix64(std::uint64_t x) {
-    x ^= x >> 33;
-    x *= 0xff51afd7ed558ccdull;
-    x ^= x >> 33;
-    x *= 0xc4ceb9fe1a85ec53ull;
-    return x ^ (x >> 33);
-}
-
-// Two 64-bit lanes (FNV-1a style xor-multiply with an xorshift, and add-multiply-rotate) over
-// 64-bit words. Not cryptographic; 128 bits make accidental collisions negligible.
-class Hasher {
-public:
-    void bytes(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        std::size_t i = 0;
-        for (; i + 8 <= size; i += 8) {
-            std::uint64_t word;
-            std::memcpy(&word, p + i, 8);
-            mix(word);
-        }
-        std::uint64_t tail = 0;
-        if (size > i) std::memcpy(&tail, p + i, size - i);
-        mix(tail ^ (std::uint64_t(size - i) << 56));
-        mLength += size;
-    }
-    template <class T> void value(const T& v) {
-        static_assert(std::is_trivially_copyable_v<T>);
-        bytes(&v, sizeof v);
-    }
-    template <class T> void vector(const std::vector<T>& values) {
-        value(std::uint64_t(values.size()));
-        bytes(values.data(), values.size() * sizeof(T));
-    }
-    std::uint64_t low() const { return mix64(mA ^ mLength); }
-    std::uint64_t high() const { return mix64(mB + mLength); }
-    std::string hex() const {
-        char text[33];
-        std::snprintf(text, sizeof text, "%016llx%016llx", static_cast<unsigned long long>(low()),
-                static_cast<unsigned long long>(high()));
-        return text;
-    }
-
-private:
-    void mix(std::uint64_t word) {
-        mA = (mA ^ word) * 0x100000001B3ull;
-        mA ^= mA >> 29;
-        mB = std::rotl((mB + word) * 0x9E3779B97F4A7C15ull, 27);
-    }
-    std::uint64_t mA = 0xCBF29CE484222325ull;
-    std::uint64_t mB = 0x84222325CBF29CE4ull;
-    std::uint64_t mLength = 0;
-};
 
 class Writer {
 public:

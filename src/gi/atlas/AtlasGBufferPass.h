@@ -7,16 +7,16 @@
 // conservative one that adds each triangle's world area inside each texel to position.w: the
 // texel's sample area for the gather, so the texels' areas add up to the surface area even
 // where charts or triangles are smaller than a texel.
-// Inputs : GpuScene (draws, materials, lights), AtlasGeometry, ShadowPass (maps already
+// Inputs : GpuScene (draws, materials, lights), AtlasGeometry, ShadowMaps (already
 //          rendered), frame UBO (light count, shadows on/off), AtlasUniforms (resolution).
 // Outputs: AtlasTextures direct, normal, position, albedo.
 #pragma once
 
+#include "gi/ShadowMaps.h"
 #include "gi/atlas/AtlasGeometry.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
-#include "render/ShadowPass.h"
 #include "scene/GpuScene.h"
 
 namespace gi::atlas {
@@ -26,7 +26,7 @@ public:
     struct Inputs {
         const scene::GpuScene& scene;
         const AtlasGeometry& geometry;
-        const render::ShadowPass& shadows;
+        const ShadowMaps& shadows;
         const gl::Buffer& frameUniforms; // FrameUniforms, std140
         const gl::Buffer& atlasUniforms; // AtlasUniforms, std140
     };

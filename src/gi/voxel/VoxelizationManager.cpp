@@ -267,6 +267,10 @@ std::vector<gl::MemoryItem> VoxelizationManager::memory() const {
 
 namespace gi::voxel {
 
+float VoxelizationManager::gatherReach() const {
+    return mVolume.extent(mVolume.levels() - 1) * std::sqrt(3.0f);
+}
+
 std::string VoxelizationManager::status() const {
     char line[160];
     std::snprintf(line, sizeof line, "voxels %d^3 x %d level%s, finest %.3g m, coarsest %.3g m, trace %dx%d",

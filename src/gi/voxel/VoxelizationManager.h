@@ -34,6 +34,8 @@ public:
     GiOutputs outputs() const override;
     std::vector<gl::MemoryItem> memory() const override;
     std::string status() const override;
+    // The diagonal of the coarsest cascade level.
+    float gatherReach() const override;
 
     // Occupancy only (for the atlas' visibility): places the cascade, clears it, voxelizes
     // and propagates coverage; no light injection, no tracing.

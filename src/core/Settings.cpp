@@ -1,4 +1,4 @@
-#include "render/Settings.h"
+#include "core/Settings.h"
 
 #include <charconv>
 #include <cmath>

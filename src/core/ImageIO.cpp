@@ -1,6 +1,6 @@
-#include "render/ImageIO.h"
+#include "core/ImageIO.h"
 
-#include "scene/Scene.h"
+#include "core/Colour.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -14,7 +14,7 @@
 #include <fstream>
 #include <unistd.h>
 
-namespace gi::render {
+namespace gi::core {
 namespace {
 
 std::string temporaryPath(const std::string& path) {
@@ -108,7 +108,7 @@ bool checkWritable(const std::string& path, std::string& error) {
 bool writePng(const std::string& path, const Image& image, std::string& error) {
     std::vector<unsigned char> bytes(image.rgb.size());
     for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const float encoded = scene::linearToSrgb(image.rgb[i]);
+        const float encoded = core::linearToSrgb(image.rgb[i]);
         bytes[i] = static_cast<unsigned char>(std::lround(encoded * 255.0f));
     }
     const std::string temporary = temporaryPath(path);
@@ -151,7 +151,7 @@ bool readPng(const std::string& path, Image& image, std::string& error) {
     }
     Image result(width, height);
     for (std::size_t i = 0; i < result.rgb.size(); ++i) {
-        result.rgb[i] = scene::srgbToLinear(float(pixels[i]) / 255.0f);
+        result.rgb[i] = core::srgbToLinear(float(pixels[i]) / 255.0f);
     }
     stbi_image_free(pixels);
     image = std::move(result);
@@ -180,4 +180,4 @@ bool readHdr(const std::string& path, Image& image, std::string& error) {
     return true;
 }
 
-} // namespace gi::render
+} // namespace gi::core

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-namespace gi::render {
+namespace gi::scene {
 
 struct CameraView {
     glm::mat4 view{1.0f};         // world -> camera (camera looks down -Z)
@@ -26,4 +26,4 @@ struct CameraView {
 [[nodiscard]] CameraView cameraLookAt(const glm::vec3& eye, const glm::vec3& target,
         float yfovRadians, float aspect, const scene::Aabb& bounds);
 
-} // namespace gi::render
+} // namespace gi::scene

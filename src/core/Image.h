@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace gi::render {
+namespace gi::core {
 
 struct Image {
     int width = 0, height = 0;
@@ -34,4 +34,4 @@ struct Image {
 // True when every value is finite (no NaN, no Inf).
 [[nodiscard]] bool allFinite(const Image& image);
 
-} // namespace gi::render
+} // namespace gi::core

@@ -1,8 +1,8 @@
-#include "render/Image.h"
+#include "core/Image.h"
 
 #include <cmath>
 
-namespace gi::render {
+namespace gi::core {
 
 Image boxDownsample(const Image& image, int factor) {
     if (factor <= 1) return image;
@@ -27,4 +27,4 @@ bool allFinite(const Image& image) {
     return true;
 }
 
-} // namespace gi::render
+} // namespace gi::core

@@ -1,11 +1,11 @@
-#include "render/CameraView.h"
+#include "scene/CameraView.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-namespace gi::render {
+namespace gi::scene {
 namespace {
 
 // Far plane past the farthest bounds corner; near plane a fixed fraction of it, which keeps
@@ -53,4 +53,4 @@ CameraView cameraLookAt(const glm::vec3& eye, const glm::vec3& target, float yfo
     return view;
 }
 
-} // namespace gi::render
+} // namespace gi::scene

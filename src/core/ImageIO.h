@@ -3,11 +3,11 @@
 // renamed into place, so a failed write never leaves a partial file that looks finished.
 #pragma once
 
-#include "render/Image.h"
+#include "core/Image.h"
 
 #include <string>
 
-namespace gi::render {
+namespace gi::core {
 
 [[nodiscard]] bool writePng(const std::string& path, const Image& image, std::string& error);
 // Chooses EXR or PFM from the extension (.exr / .pfm).
@@ -23,4 +23,4 @@ namespace gi::render {
 
 [[nodiscard]] bool hasExtension(const std::string& path, const std::string& extension);
 
-} // namespace gi::render
+} // namespace gi::core
