@@ -1,5 +1,5 @@
 // Visibility between a receiver and a sender through the voxel cascade's occupancy (SEEDS.md
-// section 2, "future work: visibility"; the cascade layout of voxel_common.glsl, coverage in
+// section 2, "future work: visibility"; the cascade layout of voxel_cascade.glsl, coverage in
 // the albedo texture's alpha, each voxel's surface plane in the normal texture). The segment
 // is walked voxel by voxel through the finest level containing each point, each voxel once.
 // An occupied voxel whose surface is one plane (its mean normal is nearly unit length) blocks
@@ -12,7 +12,7 @@
 #ifndef GI_ATLAS_VOXEL_VISIBILITY_GLSL
 #define GI_ATLAS_VOXEL_VISIBILITY_GLSL
 
-#include "../voxel/voxel_common.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;

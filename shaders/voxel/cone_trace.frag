@@ -33,28 +33,21 @@
 // coverage spread each wall over two half-opaque voxel layers that let a quarter of a
 // crossing ray through. The pyramid holds light only: its coverage would halve a one-voxel
 // wall's opacity per mip and let cones through walls.
+#include "../common/constants.glsl"
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
-#include "voxel_common.glsl"
+#include "../common/vertex_data.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelAlbedoTexture;
 layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTexture;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
-
-in VertexData {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vin;
+in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
 
-const float PI = 3.14159265358979;
 // A ray crosses at most 3 v voxels of the coarsest level; finer levels add fewer steps.
 const int kMaxSteps = 1024;
 // A voxel whose mean normal is at least this long holds one flat surface (two surfaces at
@@ -205,8 +198,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
-    if (materialCutOut(m, baseColor.a)) discard;
+    if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
     float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
     int level = finestLevel(vin.position);
     if (level < 0) {
