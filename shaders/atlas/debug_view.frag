@@ -8,29 +8,21 @@
 //   albedo    rho
 //   indirect  E_ind / pi: the radiance of a white diffuser (as the voxel irradiance view)
 //   charts    a random colour per chart
+#include "../common/constants.glsl"
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
 #include "atlas_common.glsl"
+#include "atlas_vertex.glsl"
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 layout(binding = BIND_TEX_ATLAS_DIRECT) uniform sampler2D atlasDirect;
 layout(binding = BIND_TEX_ATLAS_NORMAL) uniform sampler2D atlasNormal;
 layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
 layout(binding = BIND_TEX_ATLAS_ALBEDO) uniform sampler2D atlasAlbedo;
 layout(binding = BIND_TEX_ATLAS_LIT) uniform sampler2D atlasLit;
 
-in ResolveVertex {
-    vec3 position;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-    vec2 atlasUv;
-    flat float chart;
-} vin;
+in ResolveVertex { RESOLVE_VERTEX_MEMBERS } vin;
 
 layout(location = 0) out vec4 outColor;
-
-const float PI = 3.14159265358979;
 
 vec3 chartColor(uint id) {
     // PCG-style integer hash to a saturated colour.
@@ -43,8 +35,7 @@ vec3 chartColor(uint id) {
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
-    if (materialCutOut(m, baseColor.a)) discard;
+    if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
     int resolution = atlas.size.x;
     ivec2 texel = clamp(ivec2(floor(vin.atlasUv * float(resolution))), ivec2(0),
             ivec2(resolution - 1));

@@ -16,17 +16,9 @@
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
 #include "../common/shadows.glsl"
+#include "atlas_vertex.glsl"
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
-
-in AtlasVertex {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-    float doubleSided;
-} vin;
+in AtlasVertex { ATLAS_VERTEX_MEMBERS } vin;
 
 #ifdef CONSERVATIVE
 flat in vec4 texelBounds;
@@ -100,12 +92,8 @@ layout(location = 3) out vec4 outAlbedo;
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    // Only cut-outs need the base colour (the same test as the other draws, at the texel
-    // centre).
-    if (m.flags.z == ALPHA_MASK &&
-            materialCutOut(m, materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color).a)) {
-        discard;
-    }
+    // The same cut-out as the other draws, at the texel centre.
+    if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
     float inside =
             clippedArea(triangleAB.xy, triangleAB.zw, triangleC.xy, floor(gl_FragCoord.xy));
     if (inside <= 0.0) discard;

@@ -8,27 +8,14 @@
 // With SAMPLE_AREA the fragment stage also gets the original triangle (texel units) and its
 // world area per texel^2, to add up the surface area inside each texel (gbuffer.frag).
 #include "atlas_common.glsl"
+#include "atlas_vertex.glsl"
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
-in AtlasVertex {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-    float doubleSided;
-} vin[];
+in AtlasVertex { ATLAS_VERTEX_MEMBERS } vin[];
 
-out AtlasVertex {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-    float doubleSided;
-} vout;
+out AtlasVertex { ATLAS_VERTEX_MEMBERS } vout;
 
 flat out vec4 texelBounds;   // xy = min, zw = max corner of the triangle (texels)
 #ifdef SAMPLE_AREA

@@ -4,25 +4,17 @@
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
 #include "atlas_common.glsl"
+#include "atlas_vertex.glsl"
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 layout(binding = BIND_TEX_ATLAS_LIT) uniform sampler2D atlasLit;
 
-in ResolveVertex {
-    vec3 position;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-    vec2 atlasUv;
-    flat float chart;
-} vin;
+in ResolveVertex { RESOLVE_VERTEX_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
-    if (materialCutOut(m, baseColor.a)) discard;
+    if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
     float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
     outIndirect = vec4(texture(atlasLit, vin.atlasUv).rgb, viewDepth);
 }

@@ -1,29 +1,24 @@
 // Visibility between a receiver and a sender through the voxel cascade's occupancy (SEEDS.md
-// section 2, "future work: visibility"; the cascade layout of voxel_common.glsl, coverage in
+// section 2, "future work: visibility"; the cascade layout of voxel_cascade.glsl, coverage in
 // the albedo texture's alpha, each voxel's surface plane in the normal texture). The segment
 // is walked voxel by voxel through the finest level containing each point, each voxel once.
-// An occupied voxel whose surface is one plane (its mean normal is nearly unit length) blocks
-// the segment only where the segment crosses that plane inside the voxel, weighted by its
-// coverage: a ray that grazes a wall within a voxel of it, as rays between neighbouring
-// receivers near a corner do, passes. A voxel of several surfaces (edges, corners) and any
-// voxel of a coarser level block by their coverage alone. Both ends first leave their own
+// An occupied voxel whose surface is one plane (voxel_plane.glsl) blocks the segment only
+// where the segment crosses that plane inside the voxel, weighted by its coverage: a ray that
+// grazes a wall within a voxel of it, as rays between neighbouring receivers near a corner
+// do, passes. A voxel of several surfaces (edges, corners) and any voxel of a coarser level,
+// whose plane is an average of surfaces rather than one, block by their coverage alone. Both ends first leave their own
 // surface by one voxel along its normal, and the voxels they then start in do not block, so a
 // surface never occludes itself. Parts of the segment outside the cascade count as empty.
 #ifndef GI_ATLAS_VOXEL_VISIBILITY_GLSL
 #define GI_ATLAS_VOXEL_VISIBILITY_GLSL
 
-#include "../voxel/voxel_common.glsl"
+#include "../common/voxel_cascade.glsl"
+#include "../common/voxel_plane.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;
 
 const int kMaxVisibilitySteps = 512;
-// Mean normals at least this long come from one plane (two perpendicular planes give 0.71).
-const float kPlanarNormal = 0.9;
-// A segment crosses a voxel's plane when it comes within this many voxel sizes of it on both
-// sides: the stored offset is 8-bit and stochastically rounded, and a surface lying on a
-// voxel face is stored as an offset of -0.5 or +0.5 that may round to just outside the voxel.
-const float kPlaneTolerance = 0.1;
 
 float endOffset(vec3 p) {
     int level = finestLevel(p);
@@ -67,17 +62,9 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
         bool endVoxel = i == 0 || exit >= len;
         if (coverage > 0.0 && !endVoxel) {
             vec4 plane = texelFetch(voxelPlane, texel, 0);
-            float normalLength = length(plane.xyz);
-            bool blocks = true;
-            // Level 0 keeps the mean of its fragments' unit normals; coarser levels store a
-            // normalised mean, which no longer tells one plane from several.
-            if (level == 0 && normalLength >= kPlanarNormal) {
-                vec3 n = plane.xyz / normalLength;
-                vec3 centre = lo + 0.5 * size;
-                float s0 = dot(n, p - centre) / size - plane.w;
-                float s1 = dot(n, a + dir * exit - centre) / size - plane.w;
-                blocks = min(s0, s1) <= kPlaneTolerance && max(s0, s1) >= -kPlaneTolerance;
-            }
+            bool blocks = !voxelHoldsOnePlane(plane, level, false) ||
+                    segmentCrossesVoxelPlane(plane, lo + 0.5 * size, size, p, a + dir * exit,
+                            kPlaneTolerance);
             if (blocks) transmittance *= 1.0 - coverage;
         }
         t = exit;

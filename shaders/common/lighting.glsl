@@ -7,7 +7,12 @@
 #ifndef GI_LIGHTING_GLSL
 #define GI_LIGHTING_GLSL
 
-const float PI = 3.14159265358979;
+#include "constants.glsl"
+#include "shared.h"
+
+layout(std430, binding = BIND_SSBO_LIGHTS) readonly buffer LightBlock {
+    GpuLight lights[];
+};
 
 // Unit vector from the surface towards the light, and the distance (inf for directional).
 void lightDirection(GpuLight light, vec3 position, out vec3 toLight, out float distance) {

@@ -3,8 +3,17 @@
 #ifndef GI_MATERIAL_GLSL
 #define GI_MATERIAL_GLSL
 
+#include "shared.h"
+
+layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
+    GpuMaterial materials[];
+};
+
 layout(binding = BIND_TEX_BASE_COLOR) uniform sampler2D baseColorTexture;
 layout(binding = BIND_TEX_EMISSIVE) uniform sampler2D emissiveTexture;
+
+// Index of the current draw's material in `materials`.
+layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 
 vec4 materialBaseColor(GpuMaterial m, vec2 uv0, vec2 uv1, vec4 vertexColor) {
     vec4 color = m.baseColorFactor * vertexColor;
@@ -18,8 +27,16 @@ vec3 materialEmission(GpuMaterial m, vec2 uv0) {
     return e;
 }
 
+// For passes that shade with the base colour: whether its alpha cuts the fragment out.
 bool materialCutOut(GpuMaterial m, float alpha) {
     return m.flags.z == ALPHA_MASK && alpha < m.emissiveAndCutoff.w;
+}
+
+// For passes that need no colour: the same cut-out, reading the base colour only for masked
+// materials.
+bool materialMaskedOut(GpuMaterial m, vec2 uv0, vec2 uv1, vec4 vertexColor) {
+    return m.flags.z == ALPHA_MASK &&
+           materialCutOut(m, materialBaseColor(m, uv0, uv1, vertexColor).a);
 }
 
 #endif

@@ -7,6 +7,8 @@
 #ifndef GI_SHADOWS_GLSL
 #define GI_SHADOWS_GLSL
 
+#include "lighting.glsl"
+
 layout(std430, binding = BIND_SSBO_SHADOWS) readonly buffer ShadowBlock {
     GpuShadow shadows[];
 };

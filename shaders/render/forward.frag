@@ -5,18 +5,12 @@
 #include "../common/frame.glsl"
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
+#include "../common/vertex_data.glsl"
 #include "../common/shadows.glsl"
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 layout(binding = BIND_TEX_INDIRECT) uniform sampler2D indirectTexture;
 
-in VertexData {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vin;
+in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outRadiance;
 

@@ -21,10 +21,12 @@
 // The coarsest level: a cone there is a ray to the voxels it reads, narrower than them near
 // its start and wider than any voxel the cascade has once it outgrows them (the cascade is
 // centred on the camera, so a scene seen from outside lies wholly in the coarsest level).
-// Its axis is walked voxel by voxel (a 3D DDA). A voxel holding one flat surface (voxelize
-// keeps the surface's offset from the voxel centre in the normal's w) is met where the axis
-// crosses that plane, with opacity = coverage, or not at all; other occupied voxels occlude
-// like finer levels' samples over the axis' path through them. The light met there is the
+// Its axis is walked voxel by voxel (a 3D DDA). A voxel holding one flat surface
+// (voxel_plane.glsl) is met where the axis crosses that plane, with opacity = coverage, or
+// not at all; other occupied voxels occlude like finer levels' samples over the axis' path
+// through them. Whenever the cascade has more than one level the coarsest is propagated, and
+// its normals cannot tell one plane from several: the walk takes each of its voxels for one
+// plane, so a voxel where surfaces meet is met at their mean plane. The light met there is the
 // reflected light over the cone's footprint: the filtered voxels while the cone is narrower
 // than they are, then the pyramid above the coarsest level (RadiancePyramidPass.h) at the
 // cone's width.
@@ -33,33 +35,27 @@
 // coverage spread each wall over two half-opaque voxel layers that let a quarter of a
 // crossing ray through. The pyramid holds light only: its coverage would halve a one-voxel
 // wall's opacity per mip and let cones through walls.
+#include "../common/constants.glsl"
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
-#include "voxel_common.glsl"
+#include "../common/vertex_data.glsl"
+#include "../common/voxel_cascade.glsl"
+#include "../common/voxel_plane.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelAlbedoTexture;
 layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTexture;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
-
-in VertexData {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vin;
+in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
 
-const float PI = 3.14159265358979;
 // A ray crosses at most 3 v voxels of the coarsest level; finer levels add fewer steps.
 const int kMaxSteps = 1024;
-// A voxel whose mean normal is at least this long holds one flat surface (two surfaces at
-// right angles in equal parts give 0.71).
-const float kFlatNormal = 0.9;
+// The axis meets a flat voxel's plane up to this many voxel sizes, measured along the axis,
+// before or after its path through the voxel.
+const float kAxisCrossingSlack = 0.01;
 
 struct VoxelSample {
     vec4 albedo;       // rgb = albedo x coverage, a = coverage
@@ -149,19 +145,25 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
                 coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0);
                 if (coverage <= 0.0) continue;
                 vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
-                float normalLength = length(plane.xyz);
                 float cosine = dot(dir, plane.xyz);
                 // A voxel facing away from the cone is skipped, as in the thesis: its surface
                 // sends no light this way, and its occlusion would mostly be the cone's own
                 // surface seen from behind (the voxel layer the cone starts in).
                 if (cosine > 0.0) continue;
-                if (normalLength > kFlatNormal) {
+                if (voxelHoldsOnePlane(plane, coarsest, true)) {
                     // One flat surface: the axis meets it where it crosses its plane, or not
                     // at all in this voxel, and crossing it is an occlusion of `coverage`.
                     vec3 centre = coarsestOrigin + (cell + 0.5) * coarsestSize;
-                    vec3 onPlane = centre + plane.w * coarsestSize * plane.xyz / normalLength;
-                    hit = dot(onPlane - p, plane.xyz) / cosine;
-                    if (hit < -0.01 * coarsestSize || hit > path + 0.01 * coarsestSize) continue;
+                    vec3 exitPoint = p + dir * path;
+                    // The slack along the axis as a distance along the normal.
+                    float slack = kAxisCrossingSlack * -cosine / length(plane.xyz);
+                    if (!segmentCrossesVoxelPlane(plane, centre, coarsestSize, p, exitPoint,
+                            slack)) {
+                        continue;
+                    }
+                    float entrySide = voxelPlaneDistance(plane, centre, coarsestSize, p);
+                    float exitSide = voxelPlaneDistance(plane, centre, coarsestSize, exitPoint);
+                    hit = path * entrySide / (entrySide - exitSide);
                     crossed = true;
                 } else {
                     // Several surfaces: occluding along the whole path, light read halfway.
@@ -205,8 +207,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
-    if (materialCutOut(m, baseColor.a)) discard;
+    if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
     float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
     int level = finestLevel(vin.position);
     if (level < 0) {

@@ -1,25 +1,10 @@
 // Cone tracing, vertex stage: the scene from the camera at the trace resolution.
 #include "../common/frame.glsl"
+#include "../common/scene_vertex.glsl"
 
-layout(location = ATTR_POSITION) in vec3 inPosition;
-layout(location = ATTR_NORMAL) in vec3 inNormal;
-layout(location = ATTR_TEXCOORD0) in vec2 inTexcoord0;
-layout(location = ATTR_TEXCOORD1) in vec2 inTexcoord1;
-layout(location = ATTR_COLOR) in vec4 inColor;
-
-out VertexData {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vout;
+out VertexData { VERTEX_DATA_MEMBERS } vout;
 
 void main() {
-    vout.position = inPosition;
-    vout.normal = inNormal;
-    vout.texcoord0 = inTexcoord0;
-    vout.texcoord1 = inTexcoord1;
-    vout.color = inColor;
+    WRITE_VERTEX_DATA(vout)
     gl_Position = frame.viewProjection * vec4(inPosition, 1.0);
 }

@@ -1,8 +1,9 @@
 // Voxel debug views: marches the camera ray through one cascade level and shows the first
 // occupied voxel's albedo, its irradiance as the radiance of a white diffuser (E/pi), or its
 // normal (0.5 + 0.5 n). Alpha is 1 where a voxel was hit.
+#include "../common/constants.glsl"
 #include "../common/frame.glsl"
-#include "voxel_common.glsl"
+#include "../common/voxel_cascade.glsl"
 
 #define VIEW_ALBEDO 0
 #define VIEW_IRRADIANCE 1
@@ -13,8 +14,6 @@ layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTex
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 
 layout(location = 0) out vec4 outColor;
-
-const float PI = 3.14159265358979;
 
 void main() {
     int level = voxel.grid.z;

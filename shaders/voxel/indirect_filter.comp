@@ -3,7 +3,7 @@
 // (2r+1)^2 neighbourhood, every neighbour weighted by how close its view depth is to the
 // centre's, so light does not cross depth edges. With the per-pixel cone jitter, the
 // neighbourhood holds 16 different cone rings: the mean behaves like many more cones.
-#include "voxel_common.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(local_size_x = VOXEL_FILTER_LOCAL_SIZE, local_size_y = VOXEL_FILTER_LOCAL_SIZE) in;
 

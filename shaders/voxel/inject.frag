@@ -12,40 +12,22 @@
 //                A = footprint / cos(theta_surface)                           (orthographic),
 // and the voxel's irradiance is the summed flux over the surface area voxelization measured:
 // the area-weighted mean irradiance of the surfaces in the voxel, lit or not.
-#include "voxel_common.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(early_fragment_tests) in;
 
-layout(std430, binding = BIND_SSBO_LIGHTS) readonly buffer LightBlock {
-    GpuLight lights[];
-};
-
-layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
-    GpuMaterial materials[];
-};
-
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
+#include "../common/vertex_data.glsl"
 #include "voxel_lock.glsl"
-
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
 
 layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) coherent uniform image3D voxelHelper;
 
-in VertexData {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vin;
+in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    if (m.flags.z == ALPHA_MASK) {
-        vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
-        if (materialCutOut(m, baseColor.a)) discard;
-    }
+    if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
     GpuLight light = lights[int(voxel.lightIndex.x)];
     vec3 n = normalize(vin.normal);
     // The side of the surface the light sees is the lit side, whatever the winding.

@@ -10,7 +10,8 @@
 // propagation and the filtered reads of cone tracing expect (an empty neighbour then
 // lowers a trilinear read's coverage, not the albedo it returns).
 // Both clear the helper.
-#include "voxel_common.glsl"
+#include "../common/constants.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
 
@@ -35,7 +36,6 @@ void main() {
         if (helper.a == 0.0) return;
         total = current.rgb + helper.rgb;
     }
-    // Half floats overflow above 65504 W/m^2: clamp instead of writing Inf.
-    imageStore(voxelIrradiance, texel, vec4(min(total, vec3(65000.0)), current.a));
+    imageStore(voxelIrradiance, texel, vec4(min(total, vec3(HALF_STORE_MAX)), current.a));
     imageStore(voxelHelper, texel, vec4(0.0));
 }

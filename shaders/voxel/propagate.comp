@@ -12,7 +12,7 @@
 // of the two layers then stays opaque at every level instead of halving its coverage per
 // level (which lets cones see through walls and dims what they do see); albedo and
 // irradiance are rescaled by the same factor so both stay per covered area unchanged.
-#include "voxel_common.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
 

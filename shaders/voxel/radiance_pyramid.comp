@@ -3,7 +3,8 @@
 // texel: rgb = rho E x coverage, a = coverage, both averaged over all 8 children (empty ones
 // count as zero), so rgb / a is the mean reflected light of the surfaces in the texel,
 // weighted by how much of it they cover.
-#include "voxel_common.glsl"
+#include "../common/constants.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
 
@@ -32,5 +33,5 @@ void main() {
         vec3 reflected = albedo.rgb * imageLoad(voxelIrradiance, child + slab).rgb / coverage;
         sum += vec4(reflected, coverage);
     }
-    imageStore(pyramidTarget, texel, min(sum / 8.0, vec4(65000.0)));
+    imageStore(pyramidTarget, texel, min(sum / 8.0, vec4(HALF_STORE_MAX)));
 }

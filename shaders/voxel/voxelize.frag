@@ -4,28 +4,16 @@
 // light injection can turn flux into the voxel's mean irradiance. The normal's w averages
 // the surface's signed distance from the voxel centre along the normal (in voxel sizes), so
 // a voxel of one flat surface knows where in it that surface lies.
-#include "voxel_common.glsl"
-
-layout(std430, binding = BIND_SSBO_MATERIALS) readonly buffer MaterialBlock {
-    GpuMaterial materials[];
-};
-
 #include "../common/material.glsl"
+#include "../common/vertex_data.glsl"
+#include "../common/voxel_cascade.glsl"
 #include "voxel_lock.glsl"
 
 layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) coherent uniform image3D voxelAlbedo;
 layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) coherent uniform image3D voxelNormal;
 layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) coherent uniform image3D voxelIrradiance;
 
-layout(location = LOC_DRAW_MATERIAL) uniform int drawMaterial;
-
-in VoxelVertex {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vin;
+in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 flat in float projectedCosine;
 

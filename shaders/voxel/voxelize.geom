@@ -1,26 +1,15 @@
 // Voxelization, geometry stage (thesis Listing 4.1): project each triangle orthographically
 // along the world axis its face normal is most aligned with, so it covers the most raster
 // samples. The projection spans the coarsest level; the raster is v x voxel.multiplier.
-#include "voxel_common.glsl"
+#include "../common/vertex_data.glsl"
+#include "../common/voxel_cascade.glsl"
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
-in VoxelVertex {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vin[];
+in VertexData { VERTEX_DATA_MEMBERS } vin[];
 
-out VoxelVertex {
-    vec3 position;
-    vec3 normal;
-    vec2 texcoord0;
-    vec2 texcoord1;
-    vec4 color;
-} vout;
+out VertexData { VERTEX_DATA_MEMBERS } vout;
 
 // |cos| between the face normal and the projection axis: a raster pixel covers
 // pixelArea / projectedCosine of the surface.
@@ -37,11 +26,7 @@ void main() {
         vec3 projected = faceNormal.x >= faceNormal.y && faceNormal.x >= faceNormal.z ? p.yzx
                        : faceNormal.y >= faceNormal.z ? p.zxy : p.xyz;
         gl_Position = vec4(projected.xy, projected.z * 0.5, 1.0);
-        vout.position = vin[i].position;
-        vout.normal = vin[i].normal;
-        vout.texcoord0 = vin[i].texcoord0;
-        vout.texcoord1 = vin[i].texcoord1;
-        vout.color = vin[i].color;
+        COPY_VERTEX_DATA(vout, vin[i])
         projectedCosine = cosine;
         EmitVertex();
     }

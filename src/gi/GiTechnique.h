@@ -28,7 +28,7 @@ enum class DebugView {
 };
 
 // A voxel occupancy another technique can test visibility against (the atlas gather's
-// atlas.visibility=voxel): the cascade layout of shaders/voxel/voxel_common.glsl.
+// atlas.visibility=voxel): the cascade layout of shaders/common/voxel_cascade.glsl.
 struct OccupancyVolume {
     const gl::Texture& coverage;       // sampler3D rgba16f at BIND_TEX_VOXEL_ALBEDO, a = coverage
     const gl::Texture& planes;         // sampler3D rgba8_snorm at BIND_TEX_VOXEL_NORMAL: mean

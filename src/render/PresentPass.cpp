@@ -12,7 +12,7 @@ namespace gi::render {
 
 bool PresentPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mProgram = shaders.build({"render/present",
-            {{GL_VERTEX_SHADER, "render/present.vert"},
+            {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
                     {GL_FRAGMENT_SHADER, "render/present.frag"}},
             {}}, error);
     mEmpty = gl::createVertexArray("render/present/empty");

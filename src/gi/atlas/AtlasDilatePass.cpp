@@ -6,7 +6,7 @@ namespace gi::atlas {
 
 bool AtlasDilatePass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mProgram = shaders.build({"atlas/dilate",
-                                     {{GL_VERTEX_SHADER, "atlas/fullscreen.vert"},
+                                     {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "atlas/dilate.frag"}},
                                      {}},
             error);

@@ -6,13 +6,13 @@ namespace gi::atlas {
 
 bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mProgram = shaders.build({"atlas/gather",
-                                     {{GL_VERTEX_SHADER, "atlas/fullscreen.vert"},
+                                     {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "atlas/gather.frag"}},
                                      {}},
             error);
     if (!mProgram) return false;
     mVoxelProgram = shaders.build({"atlas/gather_voxel",
-                                          {{GL_VERTEX_SHADER, "atlas/fullscreen.vert"},
+                                          {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
                                                   {GL_FRAGMENT_SHADER, "atlas/gather.frag"}},
                                           {"VISIBILITY_VOXEL"}},
             error);

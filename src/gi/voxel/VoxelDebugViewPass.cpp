@@ -6,7 +6,7 @@ namespace gi::voxel {
 
 bool VoxelDebugViewPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mProgram = shaders.build({"voxel/debug_view",
-            {{GL_VERTEX_SHADER, "voxel/debug_view.vert"}, {GL_FRAGMENT_SHADER, "voxel/debug_view.frag"}},
+            {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "voxel/debug_view.frag"}},
             {}}, error);
     mEmpty = gl::createVertexArray("voxel/debug_view");
     return bool(mProgram);

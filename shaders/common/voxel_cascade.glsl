@@ -1,9 +1,10 @@
-// Cascade addressing shared by the voxel passes: which level holds a world position, its
-// voxel, and where that voxel lives in the (v, v, v*l) textures (level k = z-slab k).
-#ifndef GI_VOXEL_COMMON_GLSL
-#define GI_VOXEL_COMMON_GLSL
+// Cascade addressing shared by the voxel passes and the atlas' voxel visibility: which level
+// holds a world position, its voxel, and where that voxel lives in the (v, v, v*l) textures
+// (level k = z-slab k).
+#ifndef GI_VOXEL_CASCADE_GLSL
+#define GI_VOXEL_CASCADE_GLSL
 
-#include "../common/shared.h"
+#include "shared.h"
 
 layout(std140, binding = BIND_UBO_VOXEL) uniform VoxelBlock {
     VoxelUniforms voxel;

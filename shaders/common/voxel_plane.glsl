@@ -1,0 +1,49 @@
+// The surface plane a voxel's normal texel describes (BIND_TEX_VOXEL_NORMAL), and whether a
+// segment crosses it: a voxel of one flat surface stops what crosses that surface only.
+//
+// Level 0 (voxelize.frag): xyz = the mean of the fragments' unit normals, w = their mean
+// signed distance from the voxel centre along their normal, in voxel sizes. One flat surface
+// gives a mean normal of (nearly) unit length; several orientations shorten it.
+// Coarser levels (propagate.comp): xyz = the coverage-weighted mean of the 8 children's
+// normals, normalised; w = the mean of the children's surface points along it. The length is
+// 1 whatever the children hold, so it no longer tells one plane from several, and where a
+// floor meets a wall the mean plane runs diagonally between them: it is neither surface.
+// Only level 0 can therefore say "one plane".
+#ifndef GI_VOXEL_PLANE_GLSL
+#define GI_VOXEL_PLANE_GLSL
+
+// Mean normals at least this long come from one plane (two planes at right angles in equal
+// parts give 0.71; the 8-bit normal's rounding moves the length by about 0.01).
+const float kOnePlaneNormal = 0.9;
+
+// A segment crosses a voxel's plane when it comes within this many voxel sizes of it (along
+// the normal) on both sides: the stored offset is 8-bit and stochastically rounded, and a
+// surface lying on a voxel face is stored as an offset of -0.5 or +0.5 that may round to just
+// outside the voxel.
+const float kPlaneTolerance = 0.1;
+
+// Whether the voxel's normal texel on `level` says it holds one plane. `coarserLevels` takes
+// a coarser level's unit-length normal for one plane as well, which it is not where surfaces
+// meet (above); only cone tracing's coarsest-level walk asks for that.
+bool voxelHoldsOnePlane(vec4 plane, int level, bool coarserLevels) {
+    return (level == 0 || coarserLevels) && length(plane.xyz) >= kOnePlaneNormal;
+}
+
+// Signed distance of p from the plane of the voxel (centre, edge size), in voxel sizes,
+// positive on the side the normal points to.
+float voxelPlaneDistance(vec4 plane, vec3 centre, float size, vec3 p) {
+    vec3 n = plane.xyz / length(plane.xyz);
+    return dot(n, p - centre) / size - plane.w;
+}
+
+// Whether the segment from a to b crosses the voxel's plane, allowing `tolerance` voxel sizes
+// along the normal on either side (a segment that runs beside the plane closer than that
+// crosses it).
+bool segmentCrossesVoxelPlane(vec4 plane, vec3 centre, float size, vec3 a, vec3 b,
+        float tolerance) {
+    float da = voxelPlaneDistance(plane, centre, size, a);
+    float db = voxelPlaneDistance(plane, centre, size, b);
+    return min(da, db) <= tolerance && max(da, db) >= -tolerance;
+}
+
+#endif
