@@ -65,17 +65,20 @@ def cpp_offence(source, target):
 
 
 def glsl_offence(source, target):
-    """Why shader `source` (path under shaders/) may not include `target`, or None."""
-    family = source.parts[0]
-    resolved = (source.parent / target)
+    """Why shader `source` (path under shaders/) may not include `target`, or None. The
+    include resolves as gl/ShaderLibrary resolves it: beside the including file when such a
+    file exists, else from shaders/."""
+    beside = ROOT / "shaders" / source.parent / target
+    written = pathlib.PurePosixPath(target) if not beside.exists() else source.parent / target
     parts = []
-    for part in resolved.parts:
+    for part in written.parts:
         if part == "..":
             if not parts:
                 return "leaves shaders/"
             parts.pop()
         elif part != ".":
             parts.append(part)
+    family = source.parts[0]
     target_family = parts[0] if len(parts) > 1 else ""
     if target_family in (family, "common"):
         return None
