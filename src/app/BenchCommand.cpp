@@ -83,25 +83,14 @@ struct LoadedScene {
     bench::BenchScene bench;
 };
 
-} // namespace
+// How much of the sweep runs and how many frames each configuration gets.
+struct SweepPlan {
+    bench::SweepSize size;
+    bench::RunOptions run;
+};
 
-int runBench(const Config& config) {
-    const auto start = std::chrono::steady_clock::now();
-    const char* smokeEnv = std::getenv("VOXATLAS_BENCH_SMOKE");
-    const bool smoke = smokeEnv && std::string(smokeEnv) == "1";
-    const bench::SweepSize size = smoke         ? bench::SweepSize::Smoke
-                                  : config.quick ? bench::SweepSize::Quick
-                                                 : bench::SweepSize::Full;
-    const bench::RunOptions runOptions{2, config.quick ? 3 : 7, 3};
-    const std::string outDir = config.outDir.empty() ? "docs/results" : config.outDir;
-
-    std::error_code ec;
-    fs::create_directories(outDir, ec);
-    if (ec || !fs::is_directory(outDir)) {
-        return fail(2, "--out-dir " + outDir + ": cannot create the directory" +
-                (ec ? " (" + ec.message() + ")" : ""));
-    }
-
+// The settings under every configuration: --set, then what the sweep itself fixes.
+Settings baseSettings(const Config& config) {
     Settings base = config.settings;
     base.specular = 0.0f;
     // The sweep compares what each method costs per frame when everything moves: voxel GI
@@ -111,61 +100,129 @@ int runBench(const Config& config) {
     if (base.reference.spp == Settings{}.reference.spp) {
         base.reference.spp = config.quick ? 64 : 256;
     }
+    return base;
+}
 
-    std::vector<std::string> notes;
-    std::vector<std::unique_ptr<LoadedScene>> scenes;
-    auto addScene = [&](const std::string& path, const std::string& name,
-                            const std::optional<CameraSpec>& spec, const std::string& cameraText,
-                            glm::ivec2 quickSize, std::string& error) {
-        auto loaded = std::make_unique<LoadedScene>();
-        Config sceneConfig = config;
-        sceneConfig.scenePath = path;
-        sceneConfig.cameraSpec = spec;
-        sceneConfig.cameraIndex = 0;
-        if (!loadScene(sceneConfig, loaded->scene, error)) return false;
-        bench::BenchScene& b = loaded->bench;
-        b.name = name;
-        b.path = displayPath(path);
-        b.cameraText = cameraText;
-        b.scene = &loaded->scene;
-        b.size = config.quick ? quickSize : quickSize * 2;
-        const float aspect = float(b.size.x) / float(b.size.y);
-        if (!selectCamera(sceneConfig, loaded->scene, aspect, b.camera, error)) return false;
-        const glm::vec3 diagonal = loaded->scene.bounds.max - loaded->scene.bounds.min;
-        b.configurations = bench::benchConfigurations({size,
-                bench::shortMaxDistance(glm::length(diagonal)),
-                runOptions.warmupFrames + runOptions.timedFrames});
-        scenes.push_back(std::move(loaded));
-        return true;
-    };
+// Loads one scene with its camera, image size and configurations and appends it to `scenes`.
+bool addScene(const Config& config, const SweepPlan& sweep, const std::string& path,
+        const std::string& name, const std::optional<CameraSpec>& spec,
+        const std::string& cameraText, glm::ivec2 quickSize,
+        std::vector<std::unique_ptr<LoadedScene>>& scenes, std::string& error) {
+    auto loaded = std::make_unique<LoadedScene>();
+    Config sceneConfig = config;
+    sceneConfig.scenePath = path;
+    sceneConfig.cameraSpec = spec;
+    sceneConfig.cameraIndex = 0;
+    if (!loadScene(sceneConfig, loaded->scene, error)) return false;
+    bench::BenchScene& b = loaded->bench;
+    b.name = name;
+    b.path = displayPath(path);
+    b.cameraText = cameraText;
+    b.scene = &loaded->scene;
+    b.size = config.quick ? quickSize : quickSize * 2;
+    const float aspect = float(b.size.x) / float(b.size.y);
+    if (!selectCamera(sceneConfig, loaded->scene, aspect, b.camera, error)) return false;
+    const glm::vec3 diagonal = loaded->scene.bounds.max - loaded->scene.bounds.min;
+    b.configurations = bench::benchConfigurations({sweep.size,
+            bench::shortMaxDistance(glm::length(diagonal)),
+            sweep.run.warmupFrames + sweep.run.timedFrames});
+    scenes.push_back(std::move(loaded));
+    return true;
+}
 
-    std::string error;
-    if (!addScene(defaultScenePath(), "cornell_box", std::nullopt, "camera 0", {128, 128}, error)) {
-        return fail(2, error);
+// The Cornell box, and the second scene unless this is a smoke run or it cannot be found
+// (which is a note, not an error, unless --scene named it).
+bool addScenes(const Config& config, const SweepPlan& sweep, bool smoke,
+        std::vector<std::unique_ptr<LoadedScene>>& scenes, std::vector<std::string>& notes,
+        std::string& error) {
+    if (!addScene(config, sweep, defaultScenePath(), "cornell_box", std::nullopt, "camera 0",
+                {128, 128}, scenes, error)) {
+        return false;
     }
     if (smoke) {
         notes.push_back(
                 "VOXATLAS_BENCH_SMOKE=1: the Cornell box and a handful of configurations only.");
-    } else {
-        const SceneChoice second = secondScene(config);
-        const bool sameAsCornell = fs::exists(second.path) &&
-                                   fs::equivalent(second.path, defaultScenePath(), ec);
-        if (!sameAsCornell) {
-            if (!second.explicitPath && !fs::exists(second.path)) {
-                const std::string note = "Sponza not found at " + second.path +
-                                         "; set VOXATLAS_SPONZA or pass --scene to include it";
-                std::fprintf(stderr, "voxatlas bench: %s\n", note.c_str());
-                notes.push_back(note);
-            } else {
-                const bool sponza = isSponza(second.path);
-                if (!addScene(second.path, fs::path(second.path).stem().string(),
-                            sponza ? std::optional<CameraSpec>(kSponzaCamera) : std::nullopt,
-                            sponza ? kSponzaCameraText : "camera 0", {160, 90}, error)) {
-                    return fail(2, error);
-                }
-            }
-        }
+        return true;
     }
+    const SceneChoice second = secondScene(config);
+    std::error_code ec;
+    const bool sameAsCornell = fs::exists(second.path) &&
+                               fs::equivalent(second.path, defaultScenePath(), ec);
+    if (sameAsCornell) return true;
+    if (!second.explicitPath && !fs::exists(second.path)) {
+        const std::string note = "Sponza not found at " + second.path +
+                                 "; set VOXATLAS_SPONZA or pass --scene to include it";
+        std::fprintf(stderr, "voxatlas bench: %s\n", note.c_str());
+        notes.push_back(note);
+        return true;
+    }
+    const bool sponza = isSponza(second.path);
+    return addScene(config, sweep, second.path, fs::path(second.path).stem().string(),
+            sponza ? std::optional<CameraSpec>(kSponzaCamera) : std::nullopt,
+            sponza ? kSponzaCameraText : "camera 0", {160, 90}, scenes, error);
+}
+
+// What the report says about the run before it starts: sweep, machine, frame counts.
+bench::BenchRunInfo runInfo(const Config& config, bool smoke, const SweepPlan& sweep,
+        const platform::GlContext& context, const std::vector<std::string>& notes) {
+    bench::BenchRunInfo info;
+    info.sweep = smoke ? "smoke" : config.quick ? "quick" : "full";
+    info.date = localTime();
+    info.glRenderer = context.description();
+    info.timing = gl::currentContextTimingMode() == gl::TimingMode::Finish
+            ? "glFinish before and after each pass, wall clock (llvmpipe's timer queries miss "
+              "its rasterizer threads)"
+            : "GL timestamp queries";
+    info.cores = int(std::thread::hardware_concurrency());
+    info.warmupFrames = sweep.run.warmupFrames;
+    info.timedFrames = sweep.run.timedFrames;
+    info.scoredFrames = sweep.run.scoredFrames;
+    info.notes = notes;
+    info.loadBefore = loadAverage();
+    return info;
+}
+
+// pareto.png from bench.csv; false (and no stale plot left behind) when the script fails.
+bool plotPareto(const std::string& outDir) {
+    const std::string csvPath = (fs::path(outDir) / "bench.csv").string();
+    const std::string pngPath = (fs::path(outDir) / "pareto.png").string();
+    std::string plotMessage;
+    const bool plotted = bench::runPlotScript(kPython,
+            (fs::path(dataDirectory()) / "scripts/plot_pareto.py").string(), csvPath, pngPath,
+            plotMessage);
+    if (!plotted) {
+        // An older plot would no longer match the table.
+        std::error_code ec;
+        fs::remove(pngPath, ec);
+        std::fprintf(stderr, "voxatlas bench: plot skipped: %s\n", plotMessage.c_str());
+    }
+    return plotted;
+}
+
+} // namespace
+
+int runBench(const Config& config) {
+    const auto start = std::chrono::steady_clock::now();
+    const char* smokeEnv = std::getenv("VOXATLAS_BENCH_SMOKE");
+    const bool smoke = smokeEnv && std::string(smokeEnv) == "1";
+    const SweepPlan sweep{smoke          ? bench::SweepSize::Smoke
+                          : config.quick ? bench::SweepSize::Quick
+                                         : bench::SweepSize::Full,
+            bench::RunOptions{2, config.quick ? 3 : 7, 3}};
+    const std::string outDir = config.outDir.empty() ? "docs/results" : config.outDir;
+
+    std::error_code ec;
+    fs::create_directories(outDir, ec);
+    if (ec || !fs::is_directory(outDir)) {
+        return fail(2, "--out-dir " + outDir + ": cannot create the directory" +
+                (ec ? " (" + ec.message() + ")" : ""));
+    }
+
+    const Settings base = baseSettings(config);
+    std::vector<std::string> notes;
+    std::vector<std::unique_ptr<LoadedScene>> scenes;
+    std::string error;
+    if (!addScenes(config, sweep, smoke, scenes, notes, error)) return fail(2, error);
 
     std::string notice;
     auto context = platform::createHeadlessContext(config.gl, !config.glExplicit, error, notice);
@@ -173,21 +230,8 @@ int runBench(const Config& config) {
     if (!notice.empty()) std::fprintf(stderr, "voxatlas bench: %s\n", notice.c_str());
     if (base.glDebug) platform::installDebugMessageLog();
 
-    const bench::BenchRunner runner(base, runOptions);
-    bench::BenchRunInfo info;
-    info.sweep = smoke ? "smoke" : config.quick ? "quick" : "full";
-    info.date = localTime();
-    info.glRenderer = context->description();
-    info.timing = gl::currentContextTimingMode() == gl::TimingMode::Finish
-            ? "glFinish before and after each pass, wall clock (llvmpipe's timer queries miss "
-              "its rasterizer threads)"
-            : "GL timestamp queries";
-    info.cores = int(std::thread::hardware_concurrency());
-    info.warmupFrames = runOptions.warmupFrames;
-    info.timedFrames = runOptions.timedFrames;
-    info.scoredFrames = runOptions.scoredFrames;
-    info.notes = notes;
-    info.loadBefore = loadAverage();
+    const bench::BenchRunner runner(base, sweep.run);
+    bench::BenchRunInfo info = runInfo(config, smoke, sweep, *context, notes);
 
     std::vector<reference::ReferenceResult> references;
     std::vector<bench::BenchProgress::PlannedRun> plan;
@@ -220,18 +264,7 @@ int runBench(const Config& config) {
     info.loadAfter = loadAverage();
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!bench::writeBenchReport(outDir, measurements, info, error)) return fail(1, error);
-
-    const std::string csvPath = (fs::path(outDir) / "bench.csv").string();
-    const std::string pngPath = (fs::path(outDir) / "pareto.png").string();
-    std::string plotMessage;
-    const bool plotted = bench::runPlotScript(kPython,
-            (fs::path(dataDirectory()) / "scripts/plot_pareto.py").string(), csvPath, pngPath,
-            plotMessage);
-    if (!plotted) {
-        // An older plot would no longer match the table.
-        fs::remove(pngPath, ec);
-        std::fprintf(stderr, "voxatlas bench: plot skipped: %s\n", plotMessage.c_str());
-    }
+    const bool plotted = plotPareto(outDir);
 
     int measured = 0;
     for (const bench::BenchMeasurement& m : measurements) measured += m.available ? 1 : 0;

@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -150,6 +151,243 @@ bool parseKeyEvents(const std::string& text, std::vector<KeyEvent>& keys, std::s
     return true;
 }
 
+namespace {
+
+// The commands an option belongs to, one bit per Command.
+using CommandMask = unsigned;
+constexpr CommandMask bit(Command command) { return 1u << unsigned(command); }
+constexpr CommandMask kRender = bit(Command::Render);
+constexpr CommandMask kView = bit(Command::View);
+constexpr CommandMask kBench = bit(Command::Bench);
+constexpr CommandMask kInfo = bit(Command::Info);
+
+// Applies one option's value (empty for a switch) to the config; false with the error set.
+using ApplyOption = bool (*)(Config& config, const std::string& flag, const std::string& value,
+        std::string& error);
+
+struct OptionSpec {
+    const char* flag;
+    CommandMask commands;
+    bool takesValue;
+    ApplyOption apply;
+};
+
+// "a, b, c or d" of the names in a catalog.
+template <class Entries>
+std::string nameList(const Entries& entries) {
+    std::string list;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        if (i > 0) list += i + 1 == entries.size() ? " or " : ", ";
+        list += entries[i].name;
+    }
+    return list;
+}
+
+bool applyOut(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!core::hasExtension(v, ".png")) {
+        error = "--out " + v + ": the output image must be a .png file";
+        return false;
+    }
+    config.outPath = v;
+    return true;
+}
+
+bool applyHdr(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!core::hasExtension(v, ".exr") && !core::hasExtension(v, ".pfm")) {
+        error = "--hdr " + v + ": the HDR image must be a .exr or .pfm file";
+        return false;
+    }
+    config.hdrPath = v;
+    return true;
+}
+
+bool applyTimings(Config& config, const std::string&, const std::string& v, std::string&) {
+    config.timingsPath = v;
+    return true;
+}
+
+bool applyMode(Config& config, const std::string&, const std::string& v, std::string& error) {
+    const auto mode = render::parseGiMode(v);
+    if (!mode) {
+        error = "--mode '" + v + "': expected " + nameList(render::modeCatalog());
+        return false;
+    }
+    config.mode = *mode;
+    return true;
+}
+
+bool applyOutput(Config& config, const std::string&, const std::string& v, std::string& error) {
+    const auto output = render::parseOutputComponent(v);
+    if (!output) {
+        error = "--output '" + v + "': expected " + nameList(render::outputCatalog());
+        return false;
+    }
+    config.output = *output;
+    return true;
+}
+
+bool applySize(Config& config, const std::string& flag, const std::string& v, std::string& error) {
+    int n = 0;
+    if (!parseInt(v, n) || n < 1 || n > 16384) {
+        error = flag + " '" + v + "': expected an integer in [1, 16384]";
+        return false;
+    }
+    (flag == "--width" ? config.width : config.height) = n;
+    return true;
+}
+
+bool applyCamera(Config& config, const std::string&, const std::string& v, std::string& error) {
+    int index = 0;
+    if (!parseInt(v, index)) {
+        CameraSpec spec;
+        if (!parseCameraSpec(v, spec, error)) return false;
+        config.cameraSpec = spec;
+        return true;
+    }
+    if (index < 0) {
+        error = "--camera " + v + ": a camera index cannot be negative";
+        return false;
+    }
+    config.cameraIndex = index;
+    return true;
+}
+
+bool applyLight(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (v == "none") {
+        config.noLights = true;
+        return true;
+    }
+    scene::Light light;
+    if (!parseLightSpec(v, light, error)) return false;
+    config.extraLights.push_back(light);
+    return true;
+}
+
+bool applyGl(Config& config, const std::string&, const std::string& v, std::string& error) {
+    const auto provider = platform::parseProvider(v);
+    if (!provider) {
+        error = "--gl '" + v + "': expected egl or osmesa";
+        return false;
+    }
+    config.gl = *provider;
+    config.glExplicit = true;
+    return true;
+}
+
+bool applySet(Config& config, const std::string&, const std::string& v, std::string& error) {
+    return applySetting(config.settings, v, error);
+}
+
+bool applyMove(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!parseVec3(v, config.cameraMove) || glm::length(config.cameraMove) > 1e6f) {
+        error = "--move '" + v + "': expected DX,DY,DZ in metres per frame";
+        return false;
+    }
+    return true;
+}
+
+bool applyAnimate(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!parseFloat(v, config.animationStep) || !(config.animationStep >= 0.0f) ||
+            config.animationStep > 1e3f) {
+        error = "--animate '" + v + "': expected seconds per frame between 0 and 1000";
+        return false;
+    }
+    return true;
+}
+
+bool applyTime(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!parseFloat(v, config.animationTime) || config.animationTime < 0.0f ||
+            config.animationTime > 1e6f) {
+        error = "--time '" + v + "': expected seconds between 0 and 1e6";
+        return false;
+    }
+    return true;
+}
+
+bool applyFrames(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!parseInt(v, config.frames) || config.frames < 1) {
+        error = "--frames '" + v + "': expected a positive integer";
+        return false;
+    }
+    return true;
+}
+
+bool applyScreenshot(Config& config, const std::string&, const std::string& v, std::string& error) {
+    if (!core::hasExtension(v, ".png")) {
+        error = "--screenshot " + v + ": the screenshot must be a .png file";
+        return false;
+    }
+    config.screenshotPath = v;
+    return true;
+}
+
+bool applyKeys(Config& config, const std::string&, const std::string& v, std::string& error) {
+    return parseKeyEvents(v, config.keys, error);
+}
+
+bool applyQuick(Config& config, const std::string&, const std::string&, std::string&) {
+    config.quick = true;
+    return true;
+}
+
+bool applyOutDir(Config& config, const std::string&, const std::string& v, std::string&) {
+    config.outDir = v;
+    return true;
+}
+
+bool applyScene(Config& config, const std::string&, const std::string& v, std::string&) {
+    config.scenePath = v;
+    return true;
+}
+
+constexpr OptionSpec kOptions[] = {
+        {"--out", kRender, true, applyOut},
+        {"--hdr", kRender, true, applyHdr},
+        {"--timings", kRender, true, applyTimings},
+        {"--mode", kRender, true, applyMode},
+        {"--output", kRender, true, applyOutput},
+        {"--width", kRender | kView, true, applySize},
+        {"--height", kRender | kView, true, applySize},
+        {"--camera", kRender | kView, true, applyCamera},
+        {"--light", kRender | kView, true, applyLight},
+        {"--gl", kRender | kBench, true, applyGl},
+        {"--set", kRender | kView | kBench | kInfo, true, applySet},
+        {"--move", kRender, true, applyMove},
+        {"--animate", kRender, true, applyAnimate},
+        {"--time", kRender | kView, true, applyTime},
+        {"--frames", kView, true, applyFrames},
+        {"--screenshot", kView, true, applyScreenshot},
+        {"--keys", kView, true, applyKeys},
+        {"--quick", kBench, false, applyQuick},
+        {"--out-dir", kBench, true, applyOutDir},
+        {"--scene", kBench, true, applyScene},
+};
+
+const OptionSpec* findOption(const std::string& flag) {
+    for (const OptionSpec& option : kOptions) {
+        if (flag == option.flag) return &option;
+    }
+    return nullptr;
+}
+
+// The checks no single option can make: what each command cannot do without.
+bool checkRequired(Config& config, std::string& error) {
+    const Command command = config.command;
+    if (command == Command::Render && config.outPath.empty()) {
+        error = "render needs --out F.png";
+        return false;
+    }
+    if ((command == Command::Render || command == Command::Info) && config.scenePath.empty()) {
+        error = std::string(command == Command::Render ? "render" : "info") +
+                " needs a SCENE (.gltf or .glb)";
+        return false;
+    }
+    if (config.scenePath.empty()) config.scenePath = defaultScenePath();
+    return true;
+}
+
+} // namespace
+
 std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::string& error) {
     Config config;
     int i = 1;
@@ -161,21 +399,6 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
     }
     const Command command = config.command;
     bool sawScene = false;
-    auto value = [&](const std::string& flag) -> std::optional<std::string> {
-        if (i + 1 >= argc) {
-            error = flag + " needs a value";
-            return std::nullopt;
-        }
-        return std::string(argv[++i]);
-    };
-    auto allowed = [&](const std::string& flag, std::initializer_list<Command> commands) {
-        for (Command c : commands) {
-            if (c == command) return true;
-        }
-        error = flag + " is not an option of this command (see --help)";
-        return false;
-    };
-
     for (; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "-h" || arg == "--help") {
@@ -192,203 +415,24 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
             sawScene = true;
             continue;
         }
-        std::optional<std::string> v;
-        if (arg == "--out") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (!core::hasExtension(*v, ".png")) {
-                error = "--out " + *v + ": the output image must be a .png file";
-                return std::nullopt;
-            }
-            config.outPath = *v;
-        } else if (arg == "--hdr") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (!core::hasExtension(*v, ".exr") && !core::hasExtension(*v, ".pfm")) {
-                error = "--hdr " + *v + ": the HDR image must be a .exr or .pfm file";
-                return std::nullopt;
-            }
-            config.hdrPath = *v;
-        } else if (arg == "--timings") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            config.timingsPath = *v;
-        } else if (arg == "--mode") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (*v == "direct") config.mode = render::GiMode::Direct;
-            else if (*v == "voxel") config.mode = render::GiMode::Voxel;
-            else if (*v == "atlas") config.mode = render::GiMode::Atlas;
-            else if (*v == "reference") config.mode = render::GiMode::Reference;
-            else {
-                error = "--mode '" + *v + "': expected direct, voxel, atlas or reference";
-                return std::nullopt;
-            }
-        } else if (arg == "--output") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            const auto output = render::parseOutputComponent(*v);
-            if (!output) {
-                error = "--output '" + *v + "': expected final, direct, indirect, voxel-albedo, "
-                        "voxel-irradiance or voxel-normal";
-                return std::nullopt;
-            }
-            config.output = *output;
-        } else if (arg == "--width" || arg == "--height") {
-            if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
-            int n = 0;
-            if (!parseInt(*v, n) || n < 1 || n > 16384) {
-                error = arg + " '" + *v + "': expected an integer in [1, 16384]";
-                return std::nullopt;
-            }
-            (arg == "--width" ? config.width : config.height) = n;
-        } else if (arg == "--camera") {
-            if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
-            int index = 0;
-            if (parseInt(*v, index)) {
-                if (index < 0) {
-                    error = "--camera " + *v + ": a camera index cannot be negative";
-                    return std::nullopt;
-                }
-                config.cameraIndex = index;
-            } else {
-                CameraSpec spec;
-                if (!parseCameraSpec(*v, spec, error)) return std::nullopt;
-                config.cameraSpec = spec;
-            }
-        } else if (arg == "--light") {
-            if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
-            if (*v == "none") {
-                config.noLights = true;
-                continue;
-            }
-            scene::Light light;
-            if (!parseLightSpec(*v, light, error)) return std::nullopt;
-            config.extraLights.push_back(light);
-        } else if (arg == "--gl") {
-            if (!allowed(arg, {Command::Render, Command::Bench}) || !(v = value(arg))) return std::nullopt;
-            const auto provider = platform::parseProvider(*v);
-            if (!provider) {
-                error = "--gl '" + *v + "': expected egl or osmesa";
-                return std::nullopt;
-            }
-            config.gl = *provider;
-            config.glExplicit = true;
-        } else if (arg == "--set") {
-            if (!allowed(arg, {Command::Render, Command::View, Command::Bench, Command::Info}) || !(v = value(arg))) {
-                return std::nullopt;
-            }
-            if (!applySetting(config.settings, *v, error)) return std::nullopt;
-        } else if (arg == "--move") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (!parseVec3(*v, config.cameraMove) || glm::length(config.cameraMove) > 1e6f) {
-                error = "--move '" + *v + "': expected DX,DY,DZ in metres per frame";
-                return std::nullopt;
-            }
-        } else if (arg == "--animate") {
-            if (!allowed(arg, {Command::Render}) || !(v = value(arg))) return std::nullopt;
-            if (!parseFloat(*v, config.animationStep) || !(config.animationStep >= 0.0f) ||
-                    config.animationStep > 1e3f) {
-                error = "--animate '" + *v + "': expected seconds per frame between 0 and 1000";
-                return std::nullopt;
-            }
-        } else if (arg == "--time") {
-            if (!allowed(arg, {Command::Render, Command::View}) || !(v = value(arg))) return std::nullopt;
-            if (!parseFloat(*v, config.animationTime) || config.animationTime < 0.0f ||
-                    config.animationTime > 1e6f) {
-                error = "--time '" + *v + "': expected seconds between 0 and 1e6";
-                return std::nullopt;
-            }
-        } else if (arg == "--frames") {
-            if (!allowed(arg, {Command::View}) || !(v = value(arg))) return std::nullopt;
-            if (!parseInt(*v, config.frames) || config.frames < 1) {
-                error = "--frames '" + *v + "': expected a positive integer";
-                return std::nullopt;
-            }
-        } else if (arg == "--screenshot") {
-            if (!allowed(arg, {Command::View}) || !(v = value(arg))) return std::nullopt;
-            if (!core::hasExtension(*v, ".png")) {
-                error = "--screenshot " + *v + ": the screenshot must be a .png file";
-                return std::nullopt;
-            }
-            config.screenshotPath = *v;
-        } else if (arg == "--keys") {
-            if (!allowed(arg, {Command::View}) || !(v = value(arg))) return std::nullopt;
-            if (!parseKeyEvents(*v, config.keys, error)) return std::nullopt;
-        } else if (arg == "--quick") {
-            if (!allowed(arg, {Command::Bench})) return std::nullopt;
-            config.quick = true;
-        } else if (arg == "--out-dir") {
-            if (!allowed(arg, {Command::Bench}) || !(v = value(arg))) return std::nullopt;
-            config.outDir = *v;
-        } else if (arg == "--scene") {
-            if (!allowed(arg, {Command::Bench}) || !(v = value(arg))) return std::nullopt;
-            config.scenePath = *v;
-        } else {
+        const OptionSpec* option = findOption(arg);
+        if (!option) {
             error = "unknown option '" + arg + "' (see --help)";
             return std::nullopt;
         }
+        if ((option->commands & bit(command)) == 0) {
+            error = arg + " is not an option of this command (see --help)";
+            return std::nullopt;
+        }
+        if (option->takesValue && i + 1 >= argc) {
+            error = arg + " needs a value";
+            return std::nullopt;
+        }
+        const std::string value = option->takesValue ? argv[++i] : "";
+        if (!option->apply(config, arg, value, error)) return std::nullopt;
     }
-
-    if (command == Command::Render && config.outPath.empty()) {
-        error = "render needs --out F.png";
-        return std::nullopt;
-    }
-    if ((command == Command::Render || command == Command::Info) && config.scenePath.empty()) {
-        error = std::string(command == Command::Render ? "render" : "info") +
-                " needs a SCENE (.gltf or .glb)";
-        return std::nullopt;
-    }
-    if (config.scenePath.empty()) config.scenePath = defaultScenePath();
+    if (!checkRequired(config, error)) return std::nullopt;
     return config;
-}
-
-std::string usage(Command command) {
-    switch (command) {
-    case Command::Render:
-        return "usage: voxatlas render SCENE --out F.png [--hdr F.exr|F.pfm]\n"
-               "        [--mode direct|voxel|atlas|reference]\n"
-               "        [--output final|direct|indirect|voxel-albedo|voxel-irradiance|voxel-normal]\n"
-               "        [--width W --height H] [--camera N | --camera ex,ey,ez,tx,ty,tz,fovy_deg]\n"
-               "        [--light KIND:...] [--gl egl|osmesa] [--set key=value ...] [--timings F.json]\n"
-               "        [--time SECONDS]   (pose of the scene's glTF animations; default 0)\n"
-               "        [--move DX,DY,DZ]  (the camera travels this far each frame, warm-up included:\n"
-               "                            timings of a moving camera)\n"
-               "        [--animate SECONDS] (the scene's animations play this long each frame, from\n"
-               "                            --time: timings of animated objects)\n"
-               "\n"
-               "Renders one frame without a display (EGL surfaceless; OSMesa if EGL is missing\n"
-               "and --gl was not given) to an sRGB PNG and optionally a linear HDR image.\n"
-               "Defaults: 512x512, camera 0 of the scene, --mode direct, --output final.\n"
-               "\n"
-               "--light point:x,y,z:r,g,b:intensity\n"
-               "        spot:x,y,z:dx,dy,dz:r,g,b:intensity[:inner_deg,outer_deg]\n"
-               "        dir:dx,dy,dz:r,g,b:intensity\n"
-               "        none   (no lights from the scene and no default light)\n"
-               "\n"
-               "--set keys (default, range):\n" + settingsHelp();
-    case Command::Info:
-        return "usage: voxatlas info SCENE [--set key=value ...]\n"
-               "Prints counts, bounds, lights, cameras and the memory plan of a glTF scene: the\n"
-               "scene's own buffers, and the GI resources the settings give it (voxel cascade,\n"
-               "atlas, shadow maps). --set render.plan=adaptive shows the plan sized from the\n"
-               "scene; --set voxel.resolution=64 etc. change either plan.\n";
-    case Command::Bench:
-        return "usage: voxatlas bench [--scene SCENE] [--quick] [--out-dir DIR] [--gl egl|osmesa]\n"
-               "        [--set key=value ...]\n"
-               "\n"
-               "Sweeps the voxel and atlas GI settings on the Cornell box and on Sponza (--scene,\n"
-               "else $VOXATLAS_SPONZA, else ../shared/assets/sponza/Sponza.gltf next to the source\n"
-               "tree), times every pass, scores the indirect and final images against the cached\n"
-               "ground truth, and writes bench.csv, bench.md and pareto.png to --out-dir\n"
-               "(default docs/results). --quick: smaller images, 3 timed frames, 64 spp\n"
-               "reference, no 2048^2 / 400-sample atlas; the full sweep: 7 frames, 256 spp.\n"
-               "--set changes the base settings under every configuration\n"
-               "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n";
-    default:
-        return "usage: voxatlas [view] [SCENE] [--width W --height H] [--camera ...] [--light ...]\n"
-               "        [--frames N] [--screenshot F.png] [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"
-               "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
-               "       voxatlas bench [--scene ...] [--quick] [--out-dir DIR]\n"
-               "       voxatlas info SCENE [--set key=value ...]\n"
-               "SCENE defaults to the Cornell box. Without a display, view renders a headless\n"
-               "screenshot instead.\n";
-    }
 }
 
 } // namespace gi::app

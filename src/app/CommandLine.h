@@ -4,7 +4,7 @@
 #pragma once
 
 #include "platform/GlContext.h"
-#include "render/FrameRenderer.h"
+#include "render/OutputCatalog.h"
 #include "core/Settings.h"
 #include "scene/Scene.h"
 
@@ -59,8 +59,6 @@ struct Config {
 
 [[nodiscard]] std::optional<Config> parseCommandLine(int argc, const char* const* argv,
         std::string& error);
-
-[[nodiscard]] std::string usage(Command command);
 
 // The source tree holding assets/, shaders/ and scripts/: $VOXATLAS_DATA_DIR, else the one
 // this build was configured from.

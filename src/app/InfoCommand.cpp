@@ -24,18 +24,8 @@ const char* lightTypeName(scene::LightType type) {
 
 double mebibytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 
-} // namespace
-
-int runInfo(const Config& config) {
-    scene::Scene scene;
-    std::string error;
-    const auto start = std::chrono::steady_clock::now();
-    if (!loadScene(config, scene, error)) {
-        std::fprintf(stderr, "voxatlas info: %s\n", error.c_str());
-        return 2;
-    }
-    const double loadSeconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// Counts, bounds, recentring and animation of the loaded scene.
+void printContents(const scene::Scene& scene, double loadSeconds) {
     std::printf("scene      %s\n", scene.sourcePath.c_str());
     std::printf("load time  %.3f s (parse, buffers, texture decoding, validation)\n", loadSeconds);
     std::printf("triangles  %zu\n", scene.triangleCount());
@@ -64,6 +54,9 @@ int runInfo(const Config& config) {
                 scene.animations.size(), double(scene::animationDuration(scene)), dynamic,
                 scene.instances.size());
     }
+}
+
+void printLights(const scene::Scene& scene) {
     std::printf("lights     %zu\n", scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& l = scene.lights[i];
@@ -81,6 +74,9 @@ int runInfo(const Config& config) {
         }
         std::printf("\n");
     }
+}
+
+void printCameras(const scene::Scene& scene) {
     std::printf("cameras    %zu\n", scene.cameras.size());
     for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
         const scene::Camera& c = scene.cameras[i];
@@ -90,6 +86,10 @@ int runInfo(const Config& config) {
                 c.isDefault ? "(default)" : c.name.c_str(), eye.x, eye.y, eye.z, forward.x,
                 forward.y, forward.z, glm::degrees(c.yfov));
     }
+}
+
+// The scene's own GPU buffers and textures.
+void printSceneMemory(const scene::Scene& scene) {
     std::size_t vertexBytes = scene.vertexCount() * sizeof(scene::SceneVertex);
     std::size_t indexBytes = scene.triangleCount() * 3 * sizeof(std::uint32_t);
     std::size_t textureBytes = 0;
@@ -102,6 +102,24 @@ int runInfo(const Config& config) {
     std::printf("  scene/indices  %10.2f MiB\n", mebibytes(indexBytes));
     std::printf("  scene/textures %10.2f MiB\n", mebibytes(textureBytes));
     std::printf("  total          %10.2f MiB\n", mebibytes(vertexBytes + indexBytes + textureBytes));
+}
+
+} // namespace
+
+int runInfo(const Config& config) {
+    scene::Scene scene;
+    std::string error;
+    const auto start = std::chrono::steady_clock::now();
+    if (!loadScene(config, scene, error)) {
+        std::fprintf(stderr, "voxatlas info: %s\n", error.c_str());
+        return 2;
+    }
+    const double loadSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    printContents(scene, loadSeconds);
+    printLights(scene);
+    printCameras(scene);
+    printSceneMemory(scene);
     // The GI resources at the given settings (--set render.plan=adaptive for the scene-derived
     // plan), from the scene's first camera.
     const glm::vec3 eye = scene.cameras.empty() ? scene.bounds.center()

@@ -16,6 +16,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 namespace gi::app {
 namespace {
@@ -25,10 +26,31 @@ int fail(int status, const std::string& message) {
     return status;
 }
 
+// Writes --out, --hdr and --timings (the report is only built when asked for); on failure
+// removes what it had written, so a failed render leaves no partial output.
+bool writeOutputs(const Config& config, const core::Image& image,
+        const std::function<TimingsReport()>& timings, std::string& error) {
+    std::vector<std::string> written;
+    auto cleanUp = [&] {
+        for (const std::string& path : written) std::filesystem::remove(path);
+        return false;
+    };
+    if (!core::writePng(config.outPath, image, error)) return cleanUp();
+    written.push_back(config.outPath);
+    if (!config.hdrPath.empty()) {
+        if (!core::writeHdr(config.hdrPath, image, error)) return cleanUp();
+        written.push_back(config.hdrPath);
+    }
+    if (!config.timingsPath.empty() && !writeTimingsJson(config.timingsPath, timings(), error)) {
+        return cleanUp();
+    }
+    return true;
+}
+
 // The ground-truth path tracer: no GL context, results cached on disk by content.
 int runReference(const Config& config, const scene::Scene& scene, const scene::CameraView& camera,
         int width, int height) {
-    if (render::isDebugView(config.output)) {
+    if (!render::outputAvailable(config.output, render::GiMode::Reference)) {
         return fail(2, std::string("--output ") + render::outputComponentName(config.output) +
                 " is a GPU technique's debug view; the reference renders final, direct or indirect");
     }
@@ -45,23 +67,13 @@ int runReference(const Config& config, const scene::Scene& scene, const scene::C
     const core::Image& image = config.output == render::OutputComponent::Direct ? result.direct
                                  : config.output == render::OutputComponent::Indirect ? result.indirect
                                                                                       : result.final;
-    std::vector<std::string> written;
-    auto cleanUp = [&] {
-        for (const std::string& path : written) std::filesystem::remove(path);
+    const auto timings = [&] {
+        const double ms = result.seconds * 1e3;
+        return TimingsReport{config.scenePath, render::giModeName(render::GiMode::Reference),
+                "cpu", "embree", "wall-clock", width, height, 1,
+                {{"reference/path_trace", ms, ms, ms, 1}}, {}};
     };
-    if (!core::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
-    written.push_back(config.outPath);
-    if (!config.hdrPath.empty()) {
-        if (!core::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
-        written.push_back(config.hdrPath);
-    }
-    if (!config.timingsPath.empty()) {
-        TimingsReport report{config.scenePath, "reference", "cpu", "embree", "wall-clock", width,
-                height, 1, {{"reference/path_trace", result.seconds * 1e3, result.seconds * 1e3,
-                                    result.seconds * 1e3, 1}},
-                {}};
-        if (!writeTimingsJson(config.timingsPath, report, error)) return cleanUp(), fail(1, error);
-    }
+    if (!writeOutputs(config, image, timings, error)) return fail(1, error);
     std::fprintf(stderr,
             "voxatlas render: wrote %s (%dx%d, reference, %d spp, %d bounce(s), %s, noise %.2f%% "
             "final / %.2f%% indirect)\n",
@@ -69,6 +81,33 @@ int runReference(const Config& config, const scene::Scene& scene, const scene::C
             status.hit ? "from cache" : ("rendered in " + std::to_string(result.seconds) + " s").c_str(),
             100.0 * result.noise.final, 100.0 * result.noise.indirect);
     return 0;
+}
+
+// Warm-up and timed frames. --move: each frame sees the camera one step further along the
+// same view direction; --animate: and the scene's animations that much later.
+void renderFrames(const Config& config, scene::Scene& scene, scene::CameraView camera,
+        glm::ivec2 size, render::FrameRenderer& renderer, gl::GpuProfiler& profiler) {
+    float animationTime = config.animationTime;
+    auto step = [&] {
+        camera.eye += config.cameraMove;
+        camera.view = camera.view * glm::translate(glm::mat4(1.0f), -config.cameraMove);
+        if (config.animationStep > 0.0f) {
+            animationTime += config.animationStep;
+            scene::poseScene(scene, animationTime);
+            renderer.setPose(scene);
+        }
+    };
+    for (int frame = 0; frame < config.settings.warmupFrames; ++frame) {
+        renderer.render(camera, size, config.output, profiler);
+        step();
+    }
+    profiler.clearSamples();
+    for (int frame = 0; frame < config.settings.frames; ++frame) {
+        renderer.render(camera, size, config.output, profiler);
+        profiler.collect();
+        if (frame + 1 < config.settings.frames) step();
+    }
+    profiler.flush();
 }
 
 } // namespace
@@ -103,29 +142,7 @@ int runRender(const Config& config) {
     if (!renderer.setMode(config.mode, error)) return fail(2, error);
 
     gl::GpuProfiler profiler;
-    // --move: each frame sees the camera one step further along the same view direction;
-    // --animate: and the scene's animations that much later.
-    float animationTime = config.animationTime;
-    auto step = [&] {
-        camera.eye += config.cameraMove;
-        camera.view = camera.view * glm::translate(glm::mat4(1.0f), -config.cameraMove);
-        if (config.animationStep > 0.0f) {
-            animationTime += config.animationStep;
-            scene::poseScene(scene, animationTime);
-            renderer.setPose(scene);
-        }
-    };
-    for (int frame = 0; frame < config.settings.warmupFrames; ++frame) {
-        renderer.render(camera, {width, height}, config.output, profiler);
-        step();
-    }
-    profiler.clearSamples();
-    for (int frame = 0; frame < config.settings.frames; ++frame) {
-        renderer.render(camera, {width, height}, config.output, profiler);
-        profiler.collect();
-        if (frame + 1 < config.settings.frames) step();
-    }
-    profiler.flush();
+    renderFrames(config, scene, camera, {width, height}, renderer, profiler);
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
         return fail(1, gl::glErrorName(glError) + " while rendering" +
                 (glError == GL_OUT_OF_MEMORY ? ": the driver ran out of memory (lower the "
@@ -135,23 +152,13 @@ int runRender(const Config& config) {
     const core::Image image = renderer.readback();
     if (!core::allFinite(image)) return fail(1, "the rendered image has non-finite pixels");
 
-    std::vector<std::string> written;
-    auto cleanUp = [&] {
-        for (const std::string& path : written) std::filesystem::remove(path);
+    const auto timings = [&] {
+        return TimingsReport{config.scenePath, render::giModeName(config.mode),
+                std::string(context->provider()), context->description(),
+                profiler.mode() == gl::TimingMode::Finish ? "finish" : "queries", width, height,
+                config.settings.frames, profiler.timings(), renderer.memory()};
     };
-    if (!core::writePng(config.outPath, image, error)) return cleanUp(), fail(1, error);
-    written.push_back(config.outPath);
-    if (!config.hdrPath.empty()) {
-        if (!core::writeHdr(config.hdrPath, image, error)) return cleanUp(), fail(1, error);
-        written.push_back(config.hdrPath);
-    }
-    if (!config.timingsPath.empty()) {
-        TimingsReport report{config.scenePath, render::giModeName(config.mode), std::string(context->provider()),
-                context->description(),
-                profiler.mode() == gl::TimingMode::Finish ? "finish" : "queries", width, height, config.settings.frames,
-                profiler.timings(), renderer.memory()};
-        if (!writeTimingsJson(config.timingsPath, report, error)) return cleanUp(), fail(1, error);
-    }
+    if (!writeOutputs(config, image, timings, error)) return fail(1, error);
     std::fprintf(stderr, "voxatlas render: wrote %s (%dx%d, %s, %s)\n", config.outPath.c_str(),
             width, height, render::giModeName(config.mode), std::string(context->provider()).c_str());
     return 0;

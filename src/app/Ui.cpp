@@ -12,6 +12,10 @@
 namespace gi::app {
 namespace {
 
+constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_AlwaysAutoResize |
+        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+        ImGuiWindowFlags_NoNav;
+
 std::string formatBytes(std::size_t bytes) {
     char text[32];
     if (bytes >= (std::size_t(1) << 20)) {
@@ -110,6 +114,26 @@ bool Ui::wantsMouse() const { return mInitialised && ImGui::GetIO().WantCaptureM
 
 bool Ui::wantsKeyboard() const { return mInitialised && ImGui::GetIO().WantTextInput; }
 
+void Ui::helpWindow() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - 8.0f, 8.0f), ImGuiCond_Always,
+            ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    if (ImGui::Begin("hotkeys", &mShowHelp, kPanel)) {
+        if (ImGui::BeginTable("hotkeys", 2, ImGuiTableFlags_SizingFixedFit)) {
+            for (const HotkeyHelp& line : mHotkeys) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(line.keys.c_str());
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(line.action.c_str());
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
 bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profiler) {
     if (!mInitialised) return false;
     mFrameMs[std::size_t(mHistoryNext)] = float(frame.frameMs);
@@ -119,9 +143,6 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
 
-    constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_AlwaysAutoResize |
-            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-            ImGuiWindowFlags_NoNav;
     ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.8f);
     bool changed = false;
@@ -163,25 +184,7 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
     }
     ImGui::End();
 
-    if (mShowHelp) {
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        ImGui::SetNextWindowPos(ImVec2(display.x - 8.0f, 8.0f), ImGuiCond_Always,
-                ImVec2(1.0f, 0.0f));
-        ImGui::SetNextWindowBgAlpha(0.8f);
-        if (ImGui::Begin("hotkeys", &mShowHelp, kPanel)) {
-            if (ImGui::BeginTable("hotkeys", 2, ImGuiTableFlags_SizingFixedFit)) {
-                for (const HotkeyHelp& line : mHotkeys) {
-                    ImGui::TableNextRow();
-                    ImGui::TableNextColumn();
-                    ImGui::TextUnformatted(line.keys.c_str());
-                    ImGui::TableNextColumn();
-                    ImGui::TextUnformatted(line.action.c_str());
-                }
-                ImGui::EndTable();
-            }
-        }
-        ImGui::End();
-    }
+    if (mShowHelp) helpWindow();
 
     ImGui::Render();
     {

@@ -74,6 +74,9 @@ public:
 private:
     static constexpr int kHistory = 120;   // frames in the frame-time plot
 
+    // The hotkey table in the top-right corner.
+    void helpWindow();
+
     bool mInitialised = false;
     bool mShowHelp = false;
     std::vector<HotkeyHelp> mHotkeys;

@@ -3,6 +3,7 @@
 #include "app/FlyCamera.h"
 #include "app/RenderCommand.h"
 #include "app/SceneSetup.h"
+#include "app/SettingHotkeys.h"
 #include "app/Ui.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Limits.h"
@@ -10,6 +11,7 @@
 #include "platform/GlfwWindow.h"
 #include "render/FrameRenderer.h"
 #include "core/ImageIO.h"
+#include "render/OutputCatalog.h"
 #include "render/PresentPass.h"
 #include "scene/Animation.h"
 
@@ -17,7 +19,6 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -43,28 +44,14 @@ int fail(int status, const std::string& message) {
     return status;
 }
 
-// The GI modes on the number keys; help text, notices and the overlay follow this table. A
+// The GPU modes of render/OutputCatalog.h on the number keys 1, 2, ... in the table's order. A
 // mode FrameRenderer cannot switch to answers with its reason and the mode stays as it was.
-struct ModeKey {
-    const char* key;
-    render::GiMode mode;
-    const char* name;
-};
-constexpr std::array kModeKeys = {
-    ModeKey{"1", render::GiMode::Direct, "direct"},
-    ModeKey{"2", render::GiMode::Voxel, "voxel GI"},
-    ModeKey{"3", render::GiMode::Atlas, "atlas GI"},
-};
-
-const char* modeName(render::GiMode mode) {
-    for (const ModeKey& entry : kModeKeys) {
-        if (entry.mode == mode) return entry.name;
+std::vector<std::pair<std::string, const render::ModeEntry*>> modeKeys() {
+    std::vector<std::pair<std::string, const render::ModeEntry*>> keys;
+    for (const render::ModeEntry& entry : render::modeCatalog()) {
+        if (entry.gpu) keys.emplace_back(std::to_string(keys.size() + 1), &entry);
     }
-    return "?";
-}
-
-const char* outputName(render::OutputComponent output) {
-    return render::outputComponentName(output);
+    return keys;
 }
 
 std::string upper(std::string text) {
@@ -95,8 +82,14 @@ private:
         std::function<void()> action;
     };
 
+    // Builds the renderer, the presenter and the overlay; false with one message.
+    bool start(std::string& error);
+    // Moves the camera and plays the animations by `seconds` of wall time.
+    void advance(double seconds);
+    // The overlay, and the settings its widgets changed.
+    void drawOverlay(double seconds);
     void handleKey(const std::string& name);
-    void selectMode(const ModeKey& entry);
+    void selectMode(const render::ModeEntry& entry);
     void cycleOutput();
     // Applies a change to a copy of the settings; keeps it if the renderer accepts it.
     void changeSetting(const std::function<void(Settings&)>& change, const std::string& key);
@@ -144,10 +137,9 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
       mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex),
       mAnimationTime(config.animationTime) {
     mHotkeys.push_back({"H", "show / hide this help", [this] { mUi.toggleHelp(); }});
-    for (const ModeKey& entry : kModeKeys) {
-        mHotkeys.push_back({entry.key,
-                std::string(entry.name),
-                [this, &entry] { selectMode(entry); }});
+    for (const auto& modeKey : modeKeys()) {
+        const render::ModeEntry* entry = modeKey.second;
+        mHotkeys.push_back({modeKey.first, entry->label, [this, entry] { selectMode(*entry); }});
     }
     mHotkeys.push_back({"O", "output: final / direct / indirect / debug views", [this] { cycleOutput(); }});
     if (scene::animationDuration(*mScene) > 0.0f) {
@@ -156,65 +148,12 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
             notify(mAnimationPaused ? "animation paused" : "animation playing");
         }});
     }
-    mHotkeys.push_back({"L", "cascade level shown by voxel debug views", [this] {
-        changeSetting([](Settings& s) { s.voxel.debugLevel = (s.voxel.debugLevel + 1) % s.voxel.levels; },
-                "voxel.debug_level");
-    }});
-    mHotkeys.push_back({"F1", "voxel resolution / 2", [this] {
-        changeSetting([](Settings& s) { s.voxel.resolution = std::max(8, s.voxel.resolution / 2); },
-                "voxel.resolution");
-    }});
-    mHotkeys.push_back({"F2", "voxel resolution x 2", [this] {
-        changeSetting([](Settings& s) { s.voxel.resolution = std::min(256, s.voxel.resolution * 2); },
-                "voxel.resolution");
-    }});
-    mHotkeys.push_back({"F3", "one cascade level less", [this] {
-        changeSetting([](Settings& s) {
-            s.voxel.levels = std::max(1, s.voxel.levels - 1);
-            s.voxel.debugLevel = std::min(s.voxel.debugLevel, s.voxel.levels - 1);
-        }, "voxel.cascades");
-    }});
-    mHotkeys.push_back({"F4", "one cascade level more", [this] {
-        changeSetting([](Settings& s) { s.voxel.levels = std::min(8, s.voxel.levels + 1); },
-                "voxel.cascades");
-    }});
-    mHotkeys.push_back({"F5", "cone-trace resolution 1, 1/2, 1/4, 1/8", [this] {
-        changeSetting([](Settings& s) {
-            s.voxel.traceScale = s.voxel.traceScale <= 0.125f ? 1.0f : s.voxel.traceScale * 0.5f;
-        }, "voxel.trace_scale");
-    }});
-    mHotkeys.push_back({"F6", "voxelization multiplier 1, 2, 4, 8, 16", [this] {
-        changeSetting([](Settings& s) {
-            s.voxel.multiplier = s.voxel.multiplier >= 16 ? 1 : s.voxel.multiplier * 2;
-        }, "voxel.multiplier");
-    }});
-    mHotkeys.push_back({"F7", "injection resolution v, 2v, 4v, 8v", [this] {
-        changeSetting([](Settings& s) {
-            const int v = s.voxel.resolution;
-            const int current = s.voxel.injectResolution > 0 ? s.voxel.injectResolution : v;
-            s.voxel.injectResolution = current >= 8 * v ? 0 : current * 2;
-        }, "voxel.inject_resolution");
-    }});
-    mHotkeys.push_back({"F8", "max cone distance / 2 (from the coarsest level's edge)", [this] {
-        changeSetting([this](Settings& s) {
-            const float start = s.voxel.maxDistance > 0.0f ? s.voxel.maxDistance : coarsestReach();
-            s.voxel.maxDistance = start * 0.5f;
-        }, "voxel.max_distance");
-    }});
-    mHotkeys.push_back({"F9", "max cone distance x 2 (0 = the coarsest level's edge)", [this] {
-        changeSetting([this](Settings& s) {
-            s.voxel.maxDistance = s.voxel.maxDistance * 2.0f >= coarsestReach() ? 0.0f
-                                                                                : s.voxel.maxDistance * 2.0f;
-        }, "voxel.max_distance");
-    }});
-    mHotkeys.push_back({"F10", "depth-aware / bilinear upsampling", [this] {
-        changeSetting([](Settings& s) { s.voxel.depthUpsample = !s.voxel.depthUpsample; },
-                "voxel.upsample_depth");
-    }});
-    mHotkeys.push_back({"F11", "injection: flux per area / the thesis' fragment mean", [this] {
-        changeSetting([](Settings& s) { s.voxel.injectFragmentMean = !s.voxel.injectFragmentMean; },
-                "voxel.inject_fragment_mean");
-    }});
+    for (const SettingHotkey& hotkey : settingHotkeys()) {
+        mHotkeys.push_back({hotkey.key, hotkey.help, [this, &hotkey] {
+            const float reach = coarsestReach();
+            changeSetting([&](Settings& s) { hotkey.step(s, reach); }, hotkey.setting);
+        }});
+    }
     mHotkeys.push_back({"C", "next scene camera", [this] { nextCamera(); }});
     mHotkeys.push_back({"V", "vsync on / off", [this] {
         mWindow->setVsync(!mWindow->vsync());
@@ -241,7 +180,7 @@ void Viewer::notify(const std::string& message) {
     mNoticeTime = std::chrono::steady_clock::now();
 }
 
-void Viewer::selectMode(const ModeKey& entry) {
+void Viewer::selectMode(const render::ModeEntry& entry) {
     std::string error;
     if (!mRenderer.setMode(entry.mode, error)) {
         notify(error);
@@ -250,7 +189,7 @@ void Viewer::selectMode(const ModeKey& entry) {
     }
     mMode = entry.mode;
     if (!render::outputAvailable(mOutput, mMode)) mOutput = render::OutputComponent::Final;
-    notify(std::string("mode: ") + entry.name);
+    notify(std::string("mode: ") + entry.label);
 }
 
 void Viewer::cycleOutput() {
@@ -266,7 +205,7 @@ void Viewer::cycleOutput() {
             break;
         }
     }
-    notify(std::string("output: ") + outputName(mOutput));
+    notify(std::string("output: ") + render::outputComponentName(mOutput));
 }
 
 void Viewer::changeSetting(const std::function<void(Settings&)>& change, const std::string& key) {
@@ -360,10 +299,10 @@ UiFrame Viewer::uiFrame(double frameMs) const {
     frame.frameMs = frameMs;
     frame.timings = mProfiler.timings();
     frame.memory = mRenderer.memory();
-    frame.mode = modeName(mMode);
+    frame.mode = render::modeEntry(mMode).label;
     if (const GiTechnique* technique = mRenderer.technique()) frame.giStatus = technique->status();
     frame.plan = render::describePlan(mRenderer.plan());
-    frame.output = outputName(mOutput);
+    frame.output = render::outputComponentName(mOutput);
     frame.camera = cameraLabel();
     frame.triangles = mScene->triangleCount();
     frame.framebufferSize = mWindow->framebufferSize();
@@ -389,11 +328,10 @@ bool Viewer::writeScreenshot(const core::Image& image, const std::string& path) 
     return true;
 }
 
-int Viewer::run() {
-    std::string error;
-    if (!mRenderer.init(*mScene, mSettings, mShaders, error)) return fail(1, error);
-    if (!mPresent.init(mShaders, error)) return fail(1, error);
-    if (!mUi.init(*mWindow, error)) return fail(1, error);
+bool Viewer::start(std::string& error) {
+    if (!mRenderer.init(*mScene, mSettings, mShaders, error)) return false;
+    if (!mPresent.init(mShaders, error)) return false;
+    if (!mUi.init(*mWindow, error)) return false;
     std::vector<HotkeyHelp> help = {{"W A S D", "move"}, {"Q / E", "down / up"},
             {"Shift", "move x4 faster"}, {"mouse drag", "look around (right or left button)"},
             {"wheel", "movement speed"}};
@@ -410,7 +348,32 @@ int Viewer::run() {
                     ", counted from 0) and will not fire");
         }
     }
+    return true;
+}
 
+void Viewer::advance(double seconds) {
+    mCamera.update(readInput(), std::min(float(seconds), kMaxStepSeconds));
+    if (!mAnimationPaused && mRenderer.gpuScene().hasDynamicGeometry()) {
+        // Scripted runs (--frames) advance by a fixed 1/30 s so screenshots repeat.
+        mAnimationTime += mConfig.frames > 0 ? 1.0 / 30.0 : std::min(seconds, 0.25);
+        scene::poseScene(*mScene, mAnimationTime);
+        mRenderer.setPose(*mScene);
+    }
+}
+
+void Viewer::drawOverlay(double seconds) {
+    if (mUi.draw(uiFrame(seconds * 1000.0), mSettings, mProfiler)) {
+        std::string error;
+        if (!mRenderer.setSettings(mSettings, error)) {
+            notify(error);
+            say(error);
+        }
+    }
+}
+
+int Viewer::run() {
+    std::string error;
+    if (!start(error)) return fail(1, error);
     using Clock = std::chrono::steady_clock;
     Clock::time_point previous = Clock::now();
     bool rendered = false, finalWritten = false;
@@ -427,13 +390,7 @@ int Viewer::run() {
         const Clock::time_point now = Clock::now();
         const double seconds = std::chrono::duration<double>(now - previous).count();
         previous = now;
-        mCamera.update(readInput(), std::min(float(seconds), kMaxStepSeconds));
-        if (!mAnimationPaused && mRenderer.gpuScene().hasDynamicGeometry()) {
-            // Scripted runs (--frames) advance by a fixed 1/30 s so screenshots repeat.
-            mAnimationTime += mConfig.frames > 0 ? 1.0 / 30.0 : std::min(seconds, 0.25);
-            scene::poseScene(*mScene, mAnimationTime);
-            mRenderer.setPose(*mScene);
-        }
+        advance(seconds);
 
         const glm::ivec2 size = mWindow->framebufferSize();
         if (size.x <= 0 || size.y <= 0) {
@@ -450,13 +407,7 @@ int Viewer::run() {
                     mConfig.screenshotPath.empty() ? nextScreenshotPath() : mConfig.screenshotPath;
             (void)writeScreenshot(mRenderer.readback(), path);
         }
-        if (mUi.draw(uiFrame(seconds * 1000.0), mSettings, mProfiler)) {
-            std::string error;
-            if (!mRenderer.setSettings(mSettings, error)) {
-                notify(error);
-                say(error);
-            }
-        }
+        drawOverlay(seconds);
         const bool lastFrame = mConfig.frames > 0 && frame + 1 == mConfig.frames;
         if (lastFrame && mSettings.screenshotUi && !mConfig.screenshotPath.empty()) {
             finalWritten = true;

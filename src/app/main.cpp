@@ -4,6 +4,7 @@
 #include "app/CommandLine.h"
 #include "app/InfoCommand.h"
 #include "app/RenderCommand.h"
+#include "app/Usage.h"
 #include "app/Viewer.h"
 
 #include <cstdio>

@@ -158,6 +158,87 @@ reference::ReferenceResult BenchRunner::reference(const BenchScene& scene,
     return result;
 }
 
+namespace {
+
+// The images and times of one configuration's frames.
+struct RenderedFrames {
+    std::vector<double> frameMs;                  // wall time of each timed frame
+    std::vector<gl::PassTiming> passes;           // per pass over the timed frames
+    std::vector<core::Image> finalImages, indirectImages;   // the scored frames
+};
+
+// Warm-up, timed and scored frames of the configuration the renderer is set to.
+RenderedFrames renderFrames(render::FrameRenderer& renderer, const BenchScene& scene,
+        const BenchConfiguration& configuration, const RunOptions& options) {
+    RenderedFrames out;
+    gl::GpuProfiler profiler;
+    auto frame = [&](render::OutputComponent output) {
+        renderer.render(scene.camera, scene.size, output, profiler);
+    };
+    for (int i = 0; i < options.warmupFrames; ++i) frame(render::OutputComponent::Final);
+    profiler.clearSamples();
+    const int scored = std::max(1, options.scoredFrames);
+    const bool progressive = configuration.accumulatedFrames > 1;
+    for (int i = 0; i < options.timedFrames; ++i) {
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        frame(render::OutputComponent::Final);
+        glFinish();
+        out.frameMs.push_back(std::chrono::duration<double, std::milli>(
+                std::chrono::steady_clock::now() - start).count());
+        profiler.collect();
+        // Read back outside the timed window.
+        if (!progressive && i >= options.timedFrames - scored) {
+            out.finalImages.push_back(renderer.readback());
+        }
+    }
+    profiler.flush();
+    out.passes = profiler.timings();
+    if (progressive) {
+        // Scored after all of its frames; later frames no longer gather.
+        const int rendered = options.warmupFrames + options.timedFrames;
+        for (int i = rendered; i < configuration.accumulatedFrames; ++i) {
+            frame(render::OutputComponent::Final);
+        }
+        for (int i = 0; i < scored; ++i) {
+            frame(render::OutputComponent::Final);
+            out.finalImages.push_back(renderer.readback());
+        }
+    }
+    for (int i = 0; i < scored; ++i) {
+        frame(render::OutputComponent::Indirect);
+        out.indirectImages.push_back(renderer.readback());
+    }
+    return out;
+}
+
+// Frame time, GI pass time and memory of a measurement.
+void recordCosts(const RenderedFrames& frames, const render::FrameRenderer& renderer,
+        BenchMeasurement& m) {
+    m.frameMs = median(frames.frameMs);
+    for (const gl::PassTiming& pass : m.passes) {
+        if (isGiName(pass.name)) m.giMs += pass.gpuMsMedian;
+    }
+    for (const gl::MemoryItem& item : renderer.memory()) {
+        m.memoryBytes += item.bytes;
+        if (isGiName(item.name)) m.giMemoryBytes += item.bytes;
+    }
+}
+
+// The scored frames' errors against the ground truth.
+void recordErrors(const RenderedFrames& frames, const reference::ReferenceResult& reference,
+        BenchMeasurement& m) {
+    const ScoredErrors indirect =
+            scoreFrames(frames.indirectImages, reference.indirect, reference.coverage);
+    const ScoredErrors final = scoreFrames(frames.finalImages, reference.final, reference.coverage);
+    m.relRmseIndirect = indirect.relativeRmse;
+    m.energyRatioIndirect = indirect.energyRatio;
+    m.relRmseFinal = final.relativeRmse;
+    m.scoredFrames = int(frames.indirectImages.size());
+}
+
+} // namespace
+
 bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult& reference,
         BenchProgress& progress, std::vector<BenchMeasurement>& results, std::string& error) const {
     gl::ShaderLibrary shaders;
@@ -204,46 +285,8 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
             continue;
         }
 
-        gl::GpuProfiler profiler;
-        auto frame = [&](render::OutputComponent output) {
-            renderer.render(scene.camera, scene.size, output, profiler);
-        };
-        for (int i = 0; i < mOptions.warmupFrames; ++i) frame(render::OutputComponent::Final);
-        profiler.clearSamples();
-        const int scored = std::max(1, mOptions.scoredFrames);
-        const bool progressive = configuration.accumulatedFrames > 1;
-        std::vector<core::Image> finalImages, indirectImages;
-        std::vector<double> frameMs;
-        for (int i = 0; i < mOptions.timedFrames; ++i) {
-            glFinish();
-            const auto start = std::chrono::steady_clock::now();
-            frame(render::OutputComponent::Final);
-            glFinish();
-            frameMs.push_back(std::chrono::duration<double, std::milli>(
-                    std::chrono::steady_clock::now() - start).count());
-            profiler.collect();
-            // Read back outside the timed window.
-            if (!progressive && i >= mOptions.timedFrames - scored) {
-                finalImages.push_back(renderer.readback());
-            }
-        }
-        profiler.flush();
-        m.passes = profiler.timings();
-        if (progressive) {
-            // Scored after all of its frames; later frames no longer gather.
-            const int rendered = mOptions.warmupFrames + mOptions.timedFrames;
-            for (int i = rendered; i < configuration.accumulatedFrames; ++i) {
-                frame(render::OutputComponent::Final);
-            }
-            for (int i = 0; i < scored; ++i) {
-                frame(render::OutputComponent::Final);
-                finalImages.push_back(renderer.readback());
-            }
-        }
-        for (int i = 0; i < scored; ++i) {
-            frame(render::OutputComponent::Indirect);
-            indirectImages.push_back(renderer.readback());
-        }
+        const RenderedFrames frames = renderFrames(renderer, scene, configuration, mOptions);
+        m.passes = frames.passes;
         if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
             unavailable(gl::glErrorName(glError) + " while rendering");
             continue;
@@ -259,21 +302,8 @@ bool BenchRunner::run(const BenchScene& scene, const reference::ReferenceResult&
             continue;
         }
 
-        m.frameMs = median(frameMs);
-        for (const gl::PassTiming& pass : m.passes) {
-            if (isGiName(pass.name)) m.giMs += pass.gpuMsMedian;
-        }
-        for (const gl::MemoryItem& item : renderer.memory()) {
-            m.memoryBytes += item.bytes;
-            if (isGiName(item.name)) m.giMemoryBytes += item.bytes;
-        }
-        const ScoredErrors indirect =
-                scoreFrames(indirectImages, reference.indirect, reference.coverage);
-        const ScoredErrors final = scoreFrames(finalImages, reference.final, reference.coverage);
-        m.relRmseIndirect = indirect.relativeRmse;
-        m.energyRatioIndirect = indirect.energyRatio;
-        m.relRmseFinal = final.relativeRmse;
-        m.scoredFrames = int(indirectImages.size());
+        recordCosts(frames, renderer, m);
+        recordErrors(frames, reference, m);
         if (configuration.base) baseFrameMs[configuration.mode] = m.frameMs;
         if (const auto base = baseFrameMs.find(configuration.mode); base != baseFrameMs.end()) {
             m.frameRatio = m.frameMs / base->second;

@@ -11,83 +11,6 @@
 
 namespace gi::render {
 
-namespace {
-
-constexpr std::pair<OutputComponent, const char*> kOutputNames[] = {
-        {OutputComponent::Final, "final"}, {OutputComponent::Direct, "direct"},
-        {OutputComponent::Indirect, "indirect"}, {OutputComponent::VoxelAlbedo, "voxel-albedo"},
-        {OutputComponent::VoxelIrradiance, "voxel-irradiance"},
-        {OutputComponent::VoxelNormal, "voxel-normal"},
-        {OutputComponent::AtlasDirect, "atlas-direct"}, {OutputComponent::AtlasNormal, "atlas-normal"},
-        {OutputComponent::AtlasPosition, "atlas-position"},
-        {OutputComponent::AtlasAlbedo, "atlas-albedo"},
-        {OutputComponent::AtlasIndirect, "atlas-indirect"},
-        {OutputComponent::AtlasCharts, "atlas-charts"}};
-
-// The technique view behind each debug output.
-constexpr std::pair<OutputComponent, DebugView> kDebugViews[] = {
-        {OutputComponent::VoxelAlbedo, DebugView::VoxelAlbedo},
-        {OutputComponent::VoxelIrradiance, DebugView::VoxelIrradiance},
-        {OutputComponent::VoxelNormal, DebugView::VoxelNormal},
-        {OutputComponent::AtlasDirect, DebugView::AtlasDirect},
-        {OutputComponent::AtlasNormal, DebugView::AtlasNormal},
-        {OutputComponent::AtlasPosition, DebugView::AtlasPosition},
-        {OutputComponent::AtlasAlbedo, DebugView::AtlasAlbedo},
-        {OutputComponent::AtlasIndirect, DebugView::AtlasIndirect},
-        {OutputComponent::AtlasCharts, DebugView::AtlasCharts}};
-
-} // namespace
-
-const char* outputComponentName(OutputComponent output) {
-    for (const auto& [value, name] : kOutputNames) {
-        if (value == output) return name;
-    }
-    return "?";
-}
-
-std::optional<OutputComponent> parseOutputComponent(std::string_view text) {
-    for (const auto& [value, name] : kOutputNames) {
-        if (text == name) return value;
-    }
-    return std::nullopt;
-}
-
-const std::vector<OutputComponent>& allOutputComponents() {
-    static const std::vector<OutputComponent> all = [] {
-        std::vector<OutputComponent> outputs;
-        for (const auto& [value, name] : kOutputNames) outputs.push_back(value);
-        return outputs;
-    }();
-    return all;
-}
-
-bool isDebugView(OutputComponent output) {
-    return output != OutputComponent::Final && output != OutputComponent::Direct &&
-           output != OutputComponent::Indirect;
-}
-
-bool isRadiometric(OutputComponent output) {
-    return !isDebugView(output) || output == OutputComponent::VoxelIrradiance ||
-           output == OutputComponent::AtlasDirect || output == OutputComponent::AtlasIndirect;
-}
-
-bool outputAvailable(OutputComponent output, GiMode mode) {
-    const std::string_view name = outputComponentName(output);
-    if (name.rfind("voxel-", 0) == 0) return mode == GiMode::Voxel;
-    if (name.rfind("atlas-", 0) == 0) return mode == GiMode::Atlas;
-    return true;
-}
-
-const char* giModeName(GiMode mode) {
-    switch (mode) {
-    case GiMode::Direct: return "direct";
-    case GiMode::Voxel: return "voxel";
-    case GiMode::Atlas: return "atlas";
-    case GiMode::Reference: return "reference";
-    }
-    return "?";
-}
-
 bool FrameRenderer::shadowMapsFit(const std::vector<scene::Light>& lights,
         const ShadowSettings& settings, std::string& error) {
     return gl::fitsResourceBudget(std::to_string(lights.size()) + " light(s) at shadow.resolution " +
@@ -236,10 +159,9 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     mShadows.execute(*mScene, profiler);
     GiOutputs gi;
     if (mGi) {
-        DebugView debugView = DebugView::None;
-        for (const auto& [component, view] : kDebugViews) {
-            if (component == output && outputAvailable(output, mMode)) debugView = view;
-        }
+        const DebugView debugView = outputAvailable(output, mMode)
+                                            ? outputEntry(output).debugView
+                                            : DebugView::None;
         const bool needsOccupancy =
                 mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL;
         if (!needsOccupancy) mOccupancy.reset();

@@ -7,6 +7,7 @@
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "render/ForwardPass.h"
+#include "render/OutputCatalog.h"
 #include "render/ResourcePlan.h"
 #include "scene/GpuScene.h"
 #include "render/ShadowPass.h"
@@ -18,30 +19,9 @@
 
 #include <memory>
 #include <optional>
-#include <string_view>
 #include <string>
 
 namespace gi::render {
-
-enum class GiMode { Direct, Voxel, Atlas, Reference };
-// What a frame shows: a radiance component, or a technique's debug view.
-enum class OutputComponent {
-    Final, Direct, Indirect, VoxelAlbedo, VoxelIrradiance, VoxelNormal,
-    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts
-};
-
-// Names used on the command line, in the viewer and in reports ("voxel-albedo", ...).
-[[nodiscard]] const char* outputComponentName(OutputComponent output);
-[[nodiscard]] std::optional<OutputComponent> parseOutputComponent(std::string_view name);
-[[nodiscard]] const char* giModeName(GiMode mode);
-[[nodiscard]] const std::vector<OutputComponent>& allOutputComponents();
-// True for a technique's debug view (not a radiance component).
-[[nodiscard]] bool isDebugView(OutputComponent output);
-// True for outputs in W/m^2 or W/(m^2 sr) (the components, irradiance and direct-light views),
-// which carry the scene's pre-exposure on the GPU; false for albedo, normals, positions, charts.
-[[nodiscard]] bool isRadiometric(OutputComponent output);
-// False for a technique's debug view while another mode is active.
-[[nodiscard]] bool outputAvailable(OutputComponent output, GiMode mode);
 
 class FrameRenderer {
 public:

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iterator>
+#include <utility>
 #include <vector>
 
 namespace gi::app {
@@ -23,13 +25,14 @@ TEST(CommandLine, DefaultsToViewOfTheCornellBox) {
 TEST(CommandLine, ParsesRender) {
     std::string error;
     const auto config = parse({"render", "s.gltf", "--out", "a.png", "--hdr", "a.exr", "--mode",
-                                      "direct", "--output", "indirect", "--width", "320", "--height",
+                                      "voxel", "--output", "indirect", "--width", "320", "--height",
                                       "200", "--camera", "1", "--gl", "osmesa", "--set",
                                       "material.specular=0", "--timings", "t.json"},
             error);
     ASSERT_TRUE(config) << error;
     EXPECT_EQ(config->command, Command::Render);
     EXPECT_EQ(config->scenePath, "s.gltf");
+    EXPECT_EQ(config->mode, render::GiMode::Voxel);
     EXPECT_EQ(config->output, render::OutputComponent::Indirect);
     EXPECT_EQ(config->width, 320);
     EXPECT_EQ(config->height, 200);
@@ -38,6 +41,23 @@ TEST(CommandLine, ParsesRender) {
     EXPECT_TRUE(config->glExplicit);
     EXPECT_EQ(config->settings.specular, 0.0f);
     EXPECT_EQ(config->timingsPath, "t.json");
+}
+
+TEST(CommandLine, ParsesEveryMode) {
+    const std::pair<const char*, render::GiMode> modes[] = {{"direct", render::GiMode::Direct},
+            {"voxel", render::GiMode::Voxel}, {"atlas", render::GiMode::Atlas},
+            {"reference", render::GiMode::Reference}};
+    ASSERT_EQ(std::size(modes), render::modeCatalog().size());
+    for (const auto& [name, mode] : modes) {
+        std::string error;
+        const auto config = parse({"render", "s.gltf", "--out", "a.png", "--mode", name}, error);
+        ASSERT_TRUE(config) << name << ": " << error;
+        EXPECT_EQ(config->mode, mode) << name;
+    }
+    std::string error;
+    const auto defaults = parse({"render", "s.gltf", "--out", "a.png"}, error);
+    ASSERT_TRUE(defaults) << error;
+    EXPECT_EQ(defaults->mode, render::GiMode::Direct) << "--mode defaults to direct";
 }
 
 TEST(CommandLine, ParsesCameraSpecAndLights) {

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <set>
+#include <string>
 
 namespace gi {
 namespace {
@@ -15,6 +17,55 @@ TEST(Settings, EveryKeyRoundTripsItsDefault) {
         std::string error;
         EXPECT_TRUE(applySetting(settings, spec.key + "=" + spec.get(Settings{}), error)) << error;
         EXPECT_EQ(spec.get(settings), spec.get(Settings{})) << spec.key;
+    }
+}
+
+// A valid value of `spec` other than its default: the first candidate its setter accepts that
+// reads back different. Covers ints, floats, booleans and word choices (which accept numbers).
+std::optional<std::string> nonDefaultValue(const SettingSpec& spec) {
+    static const char* const kCandidates[] = {"1", "2", "0", "3", "0.5", "0.25", "5", "7", "17",
+            "64", "100", "512", "3000", "2.5"};
+    const std::string defaultValue = spec.get(Settings{});
+    for (const char* candidate : kCandidates) {
+        Settings settings;
+        std::string error;
+        if (spec.set(settings, candidate, error) && spec.get(settings) != defaultValue) {
+            return candidate;
+        }
+    }
+    return std::nullopt;
+}
+
+// The group a key belongs to by its prefix, as a Settings sub-struct (or none).
+bool sectionEquals(const std::string& section, const Settings& a, const Settings& b) {
+    if (section == "shadow") return a.shadow == b.shadow;
+    if (section == "voxel") return a.voxel == b.voxel;
+    if (section == "atlas") return a.atlas == b.atlas;
+    if (section == "reference") return a.reference == b.reference;
+    return true;
+}
+
+// Setting one key changes what that key reads and nothing else: two keys wired to one field,
+// or a key writing another key's field, fail here (a default round trip cannot see either).
+TEST(Settings, EachKeyChangesOnlyItself) {
+    const Settings defaults;
+    for (const SettingSpec& spec : settingSpecs()) {
+        const std::optional<std::string> value = nonDefaultValue(spec);
+        ASSERT_TRUE(value) << spec.key << ": no candidate value differs from the default";
+        Settings settings;
+        std::string error;
+        ASSERT_TRUE(applySetting(settings, spec.key + "=" + *value, error)) << error;
+        EXPECT_NE(spec.get(settings), spec.get(defaults)) << spec.key << "=" << *value;
+        for (const SettingSpec& other : settingSpecs()) {
+            if (other.key == spec.key) continue;
+            EXPECT_EQ(other.get(settings), other.get(defaults))
+                    << "setting " << spec.key << "=" << *value << " changed " << other.key;
+        }
+        const std::string section = spec.key.substr(0, spec.key.find('.'));
+        for (const char* group : {"shadow", "voxel", "atlas", "reference"}) {
+            EXPECT_EQ(sectionEquals(group, settings, defaults), group != section)
+                    << spec.key << " and the " << group << " settings";
+        }
     }
 }
 

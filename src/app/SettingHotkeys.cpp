@@ -1,0 +1,64 @@
+#include "app/SettingHotkeys.h"
+
+#include <algorithm>
+
+namespace gi::app {
+
+const std::vector<SettingHotkey>& settingHotkeys() {
+    static const std::vector<SettingHotkey> hotkeys = {
+        {"L", "cascade level shown by voxel debug views", "voxel.debug_level",
+                [](Settings& s, float) {
+                    s.voxel.debugLevel = (s.voxel.debugLevel + 1) % s.voxel.levels;
+                }},
+        {"F1", "voxel resolution / 2", "voxel.resolution",
+                [](Settings& s, float) { s.voxel.resolution = std::max(8, s.voxel.resolution / 2); }},
+        {"F2", "voxel resolution x 2", "voxel.resolution",
+                [](Settings& s, float) {
+                    s.voxel.resolution = std::min(256, s.voxel.resolution * 2);
+                }},
+        {"F3", "one cascade level less", "voxel.cascades",
+                [](Settings& s, float) {
+                    s.voxel.levels = std::max(1, s.voxel.levels - 1);
+                    s.voxel.debugLevel = std::min(s.voxel.debugLevel, s.voxel.levels - 1);
+                }},
+        {"F4", "one cascade level more", "voxel.cascades",
+                [](Settings& s, float) { s.voxel.levels = std::min(8, s.voxel.levels + 1); }},
+        {"F5", "cone-trace resolution 1, 1/2, 1/4, 1/8", "voxel.trace_scale",
+                [](Settings& s, float) {
+                    s.voxel.traceScale =
+                            s.voxel.traceScale <= 0.125f ? 1.0f : s.voxel.traceScale * 0.5f;
+                }},
+        {"F6", "voxelization multiplier 1, 2, 4, 8, 16", "voxel.multiplier",
+                [](Settings& s, float) {
+                    s.voxel.multiplier = s.voxel.multiplier >= 16 ? 1 : s.voxel.multiplier * 2;
+                }},
+        {"F7", "injection resolution v, 2v, 4v, 8v", "voxel.inject_resolution",
+                [](Settings& s, float) {
+                    const int v = s.voxel.resolution;
+                    const int current = s.voxel.injectResolution > 0 ? s.voxel.injectResolution : v;
+                    s.voxel.injectResolution = current >= 8 * v ? 0 : current * 2;
+                }},
+        {"F8", "max cone distance / 2 (from the coarsest level's edge)", "voxel.max_distance",
+                [](Settings& s, float coarsestReach) {
+                    const float start =
+                            s.voxel.maxDistance > 0.0f ? s.voxel.maxDistance : coarsestReach;
+                    s.voxel.maxDistance = start * 0.5f;
+                }},
+        {"F9", "max cone distance x 2 (0 = the coarsest level's edge)", "voxel.max_distance",
+                [](Settings& s, float coarsestReach) {
+                    s.voxel.maxDistance = s.voxel.maxDistance * 2.0f >= coarsestReach
+                                                  ? 0.0f
+                                                  : s.voxel.maxDistance * 2.0f;
+                }},
+        {"F10", "depth-aware / bilinear upsampling", "voxel.upsample_depth",
+                [](Settings& s, float) { s.voxel.depthUpsample = !s.voxel.depthUpsample; }},
+        {"F11", "injection: flux per area / the thesis' fragment mean",
+                "voxel.inject_fragment_mean",
+                [](Settings& s, float) {
+                    s.voxel.injectFragmentMean = !s.voxel.injectFragmentMean;
+                }},
+    };
+    return hotkeys;
+}
+
+} // namespace gi::app

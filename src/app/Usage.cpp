@@ -1,0 +1,108 @@
+#include "app/Usage.h"
+
+#include "render/OutputCatalog.h"
+#include "core/Settings.h"
+
+#include <cstdio>
+
+namespace gi::app {
+namespace {
+
+std::string modeChoices() {
+    std::string choices;
+    for (const render::ModeEntry& entry : render::modeCatalog()) {
+        choices += (choices.empty() ? "" : "|") + std::string(entry.name);
+    }
+    return choices;
+}
+
+std::string modesHelp() {
+    std::string text;
+    for (const render::ModeEntry& entry : render::modeCatalog()) {
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-17s %s\n", entry.name, entry.description);
+        text += line;
+    }
+    return text;
+}
+
+// Which modes show an output: "all modes" or the names, e.g. "atlas only".
+std::string modesOf(const render::OutputEntry& output) {
+    if (output.modes == render::kAllModes) return "all modes";
+    std::string names;
+    for (const render::ModeEntry& mode : render::modeCatalog()) {
+        if (output.modes & render::modeBit(mode.mode)) {
+            names += (names.empty() ? "" : ", ") + std::string(mode.name);
+        }
+    }
+    return names + " only";
+}
+
+std::string outputsHelp() {
+    std::string text;
+    for (const render::OutputEntry& entry : render::outputCatalog()) {
+        char line[200];
+        std::snprintf(line, sizeof line, "  %-17s %s (%s)\n", entry.name, entry.description,
+                modesOf(entry).c_str());
+        text += line;
+    }
+    return text;
+}
+
+} // namespace
+
+std::string usage(Command command) {
+    switch (command) {
+    case Command::Render:
+        return "usage: voxatlas render SCENE --out F.png [--hdr F.exr|F.pfm]\n"
+               "        [--mode " + modeChoices() + "] [--output OUTPUT]\n"
+               "        [--width W --height H] [--camera N | --camera ex,ey,ez,tx,ty,tz,fovy_deg]\n"
+               "        [--light KIND:...] [--gl egl|osmesa] [--set key=value ...] [--timings F.json]\n"
+               "        [--time SECONDS]   (pose of the scene's glTF animations; default 0)\n"
+               "        [--move DX,DY,DZ]  (the camera travels this far each frame, warm-up included:\n"
+               "                            timings of a moving camera)\n"
+               "        [--animate SECONDS] (the scene's animations play this long each frame, from\n"
+               "                            --time: timings of animated objects)\n"
+               "\n"
+               "Renders one frame without a display (EGL surfaceless; OSMesa if EGL is missing\n"
+               "and --gl was not given) to an sRGB PNG and optionally a linear HDR image.\n"
+               "Defaults: 512x512, camera 0 of the scene, --mode direct, --output final.\n"
+               "\n"
+               "--light point:x,y,z:r,g,b:intensity\n"
+               "        spot:x,y,z:dx,dy,dz:r,g,b:intensity[:inner_deg,outer_deg]\n"
+               "        dir:dx,dy,dz:r,g,b:intensity\n"
+               "        none   (no lights from the scene and no default light)\n"
+               "\n"
+               "--mode:\n" + modesHelp() + "\n"
+               "--output OUTPUT (debug views only in their mode):\n" + outputsHelp() + "\n"
+               "--set keys (default, range):\n" + settingsHelp();
+    case Command::Info:
+        return "usage: voxatlas info SCENE [--set key=value ...]\n"
+               "Prints counts, bounds, lights, cameras and the memory plan of a glTF scene: the\n"
+               "scene's own buffers, and the GI resources the settings give it (voxel cascade,\n"
+               "atlas, shadow maps). --set render.plan=adaptive shows the plan sized from the\n"
+               "scene; --set voxel.resolution=64 etc. change either plan.\n";
+    case Command::Bench:
+        return "usage: voxatlas bench [--scene SCENE] [--quick] [--out-dir DIR] [--gl egl|osmesa]\n"
+               "        [--set key=value ...]\n"
+               "\n"
+               "Sweeps the voxel and atlas GI settings on the Cornell box and on Sponza (--scene,\n"
+               "else $VOXATLAS_SPONZA, else ../shared/assets/sponza/Sponza.gltf next to the source\n"
+               "tree), times every pass, scores the indirect and final images against the cached\n"
+               "ground truth, and writes bench.csv, bench.md and pareto.png to --out-dir\n"
+               "(default docs/results). --quick: smaller images, 3 timed frames, 64 spp\n"
+               "reference, no 2048^2 / 400-sample atlas; the full sweep: 7 frames, 256 spp.\n"
+               "--set changes the base settings under every configuration\n"
+               "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n";
+    default:
+        return "usage: voxatlas [view] [SCENE] [--width W --height H] [--camera ...] [--light ...]\n"
+               "        [--frames N] [--screenshot F.png] [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"
+               "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
+               "       voxatlas bench [--scene ...] [--quick] [--out-dir DIR]\n"
+               "       voxatlas info SCENE [--set key=value ...]\n"
+               "SCENE defaults to the Cornell box. Without a display, view renders a headless\n"
+               "screenshot instead.\n";
+    }
+}
+
+} // namespace gi::app
