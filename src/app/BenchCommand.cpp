@@ -39,7 +39,7 @@ struct SceneChoice {
 // The second scene: --scene, else $VOXATLAS_SPONZA, else the shared Sponza next to the
 // source tree.
 SceneChoice secondScene(const Config& config) {
-    if (config.scenePath != defaultScenePath()) return {config.scenePath, true};
+    if (config.sceneGiven) return {config.scenePath, true};
     const char* env = std::getenv("VOXATLAS_SPONZA");
     if (env && *env) return {env, false};
     const fs::path shared = fs::path(dataDirectory()) / "../shared/assets/sponza/Sponza.gltf";
@@ -98,7 +98,7 @@ Settings baseSettings(const Config& config) {
     // what static caching saves).
     base.voxel.cache = false;
     if (base.reference.spp == Settings{}.reference.spp) {
-        base.reference.spp = config.quick ? 64 : 256;
+        base.reference.spp = config.sweep == bench::SweepSize::Full ? 256 : 64;
     }
     return base;
 }
@@ -119,7 +119,7 @@ bool addScene(const Config& config, const SweepPlan& sweep, const std::string& p
     b.path = displayPath(path);
     b.cameraText = cameraText;
     b.scene = &loaded->scene;
-    b.size = config.quick ? quickSize : quickSize * 2;
+    b.size = config.sweep == bench::SweepSize::Full ? quickSize * 2 : quickSize;
     const float aspect = float(b.size.x) / float(b.size.y);
     if (!selectCamera(sceneConfig, loaded->scene, aspect, b.camera, error)) return false;
     const glm::vec3 diagonal = loaded->scene.bounds.max - loaded->scene.bounds.min;
@@ -130,19 +130,14 @@ bool addScene(const Config& config, const SweepPlan& sweep, const std::string& p
     return true;
 }
 
-// The Cornell box, and the second scene unless this is a smoke run or it cannot be found
-// (which is a note, not an error, unless --scene named it).
-bool addScenes(const Config& config, const SweepPlan& sweep, bool smoke,
+// The Cornell box, and the second scene unless it cannot be found (which is a note, not an
+// error, unless --scene named it) or --scene names the Cornell box itself.
+bool addScenes(const Config& config, const SweepPlan& sweep,
         std::vector<std::unique_ptr<LoadedScene>>& scenes, std::vector<std::string>& notes,
         std::string& error) {
     if (!addScene(config, sweep, defaultScenePath(), "cornell_box", std::nullopt, "camera 0",
                 {128, 128}, scenes, error)) {
         return false;
-    }
-    if (smoke) {
-        notes.push_back(
-                "VOXATLAS_BENCH_SMOKE=1: the Cornell box and a handful of configurations only.");
-        return true;
     }
     const SceneChoice second = secondScene(config);
     std::error_code ec;
@@ -163,10 +158,10 @@ bool addScenes(const Config& config, const SweepPlan& sweep, bool smoke,
 }
 
 // What the report says about the run before it starts: sweep, machine, frame counts.
-bench::BenchRunInfo runInfo(const Config& config, bool smoke, const SweepPlan& sweep,
+bench::BenchRunInfo runInfo(const Config& config, const SweepPlan& sweep,
         const platform::GlContext& context, const std::vector<std::string>& notes) {
     bench::BenchRunInfo info;
-    info.sweep = smoke ? "smoke" : config.quick ? "quick" : "full";
+    info.sweep = bench::sweepSizeName(config.sweep);
     info.date = localTime();
     info.glRenderer = context.description();
     info.timing = gl::currentContextTimingMode() == gl::TimingMode::Finish
@@ -203,12 +198,8 @@ bool plotPareto(const std::string& outDir) {
 
 int runBench(const Config& config) {
     const auto start = std::chrono::steady_clock::now();
-    const char* smokeEnv = std::getenv("VOXATLAS_BENCH_SMOKE");
-    const bool smoke = smokeEnv && std::string(smokeEnv) == "1";
-    const SweepPlan sweep{smoke          ? bench::SweepSize::Smoke
-                          : config.quick ? bench::SweepSize::Quick
-                                         : bench::SweepSize::Full,
-            bench::RunOptions{2, config.quick ? 3 : 7, 3}};
+    const SweepPlan sweep{config.sweep,
+            bench::RunOptions{2, config.sweep == bench::SweepSize::Full ? 7 : 3, 3}};
     const std::string outDir = config.outDir.empty() ? "docs/results" : config.outDir;
 
     std::error_code ec;
@@ -222,7 +213,7 @@ int runBench(const Config& config) {
     std::vector<std::string> notes;
     std::vector<std::unique_ptr<LoadedScene>> scenes;
     std::string error;
-    if (!addScenes(config, sweep, smoke, scenes, notes, error)) return fail(2, error);
+    if (!addScenes(config, sweep, scenes, notes, error)) return fail(2, error);
 
     std::string notice;
     auto context = platform::createHeadlessContext(config.gl, !config.glExplicit, error, notice);
@@ -231,7 +222,7 @@ int runBench(const Config& config) {
     if (base.glDebug) platform::installDebugMessageLog();
 
     const bench::BenchRunner runner(base, sweep.run);
-    bench::BenchRunInfo info = runInfo(config, smoke, sweep, *context, notes);
+    bench::BenchRunInfo info = runInfo(config, sweep, *context, notes);
 
     std::vector<reference::ReferenceResult> references;
     std::vector<bench::BenchProgress::PlannedRun> plan;

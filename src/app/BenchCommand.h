@@ -1,7 +1,7 @@
 // `voxatlas bench`: picks the scenes (the Cornell box, and Sponza when it can be found), their
 // cameras and image sizes, creates the headless context, and hands the sweep to src/bench/
-// (BenchSweep, BenchRunner, BenchReport). VOXATLAS_BENCH_SMOKE=1 limits the run to the
-// Cornell box and a handful of cheap configurations (one or two per mode) for tests.
+// (BenchSweep, BenchRunner, BenchReport). `--sweep smoke` measures a handful of cheap
+// configurations (one or two per mode) on the same scenes: the form CI runs.
 #pragma once
 
 #include "app/CommandLine.h"

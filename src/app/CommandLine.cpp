@@ -326,7 +326,17 @@ bool applyKeys(Config& config, const std::string&, const std::string& v, std::st
 }
 
 bool applyQuick(Config& config, const std::string&, const std::string&, std::string&) {
-    config.quick = true;
+    config.sweep = bench::SweepSize::Quick;
+    return true;
+}
+
+bool applySweep(Config& config, const std::string& flag, const std::string& v, std::string& error) {
+    const std::optional<bench::SweepSize> size = bench::parseSweepSize(v);
+    if (!size) {
+        error = flag + " '" + v + "': expected smoke, quick or full";
+        return false;
+    }
+    config.sweep = *size;
     return true;
 }
 
@@ -337,6 +347,7 @@ bool applyOutDir(Config& config, const std::string&, const std::string& v, std::
 
 bool applyScene(Config& config, const std::string&, const std::string& v, std::string&) {
     config.scenePath = v;
+    config.sceneGiven = true;
     return true;
 }
 
@@ -344,7 +355,7 @@ constexpr OptionSpec kOptions[] = {
         {"--out", kRender, true, applyOut},
         {"--hdr", kRender, true, applyHdr},
         {"--timings", kRender, true, applyTimings},
-        {"--mode", kRender, true, applyMode},
+        {"--mode", kRender | kView, true, applyMode},
         {"--output", kRender, true, applyOutput},
         {"--width", kRender | kView, true, applySize},
         {"--height", kRender | kView, true, applySize},
@@ -359,6 +370,7 @@ constexpr OptionSpec kOptions[] = {
         {"--screenshot", kView, true, applyScreenshot},
         {"--keys", kView, true, applyKeys},
         {"--quick", kBench, false, applyQuick},
+        {"--sweep", kBench, true, applySweep},
         {"--out-dir", kBench, true, applyOutDir},
         {"--scene", kBench, true, applyScene},
 };
@@ -380,6 +392,12 @@ bool checkRequired(Config& config, std::string& error) {
     if ((command == Command::Render || command == Command::Info) && config.scenePath.empty()) {
         error = std::string(command == Command::Render ? "render" : "info") +
                 " needs a SCENE (.gltf or .glb)";
+        return false;
+    }
+    if (command == Command::View && !render::modeEntry(config.mode).gpu) {
+        error = std::string("--mode ") + render::modeEntry(config.mode).name +
+                ": the viewer shows the real-time modes only (render --mode " +
+                render::modeEntry(config.mode).name + " for a still image)";
         return false;
     }
     if (config.scenePath.empty()) config.scenePath = defaultScenePath();
@@ -412,6 +430,7 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
                 return std::nullopt;
             }
             config.scenePath = arg;
+            config.sceneGiven = true;
             sawScene = true;
             continue;
         }

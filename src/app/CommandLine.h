@@ -3,6 +3,8 @@
 // one line, and main turns it into exit status 2.
 #pragma once
 
+#include "bench/BenchSweep.h"
+
 #include "platform/GlContext.h"
 #include "render/OutputCatalog.h"
 #include "core/Settings.h"
@@ -32,6 +34,7 @@ struct Config {
     Command command = Command::View;
     Command helpFor = Command::View;        // Help: which command's help to print
     std::string scenePath;                   // empty = the default scene (Cornell box)
+    bool sceneGiven = false;                 // SCENE or --scene was on the command line
     std::string outPath;                     // render: PNG
     std::string hdrPath;                     // render: .exr or .pfm
     std::string timingsPath;                 // render: JSON
@@ -53,7 +56,7 @@ struct Config {
     std::string screenshotPath;
     std::vector<KeyEvent> keys;
     // bench
-    bool quick = false;
+    bench::SweepSize sweep = bench::SweepSize::Full;   // --sweep, --quick
     std::string outDir;
 };
 

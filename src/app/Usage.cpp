@@ -83,25 +83,30 @@ std::string usage(Command command) {
                "atlas, shadow maps). --set render.plan=adaptive shows the plan sized from the\n"
                "scene; --set voxel.resolution=64 etc. change either plan.\n";
     case Command::Bench:
-        return "usage: voxatlas bench [--scene SCENE] [--quick] [--out-dir DIR] [--gl egl|osmesa]\n"
+        return "usage: voxatlas bench [--scene SCENE] [--sweep smoke|quick|full] [--quick]\n"
+               "        [--out-dir DIR] [--gl egl|osmesa]\n"
                "        [--set key=value ...]\n"
                "\n"
                "Sweeps the voxel and atlas GI settings on the Cornell box and on Sponza (--scene,\n"
                "else $VOXATLAS_SPONZA, else ../shared/assets/sponza/Sponza.gltf next to the source\n"
                "tree), times every pass, scores the indirect and final images against the cached\n"
                "ground truth, and writes bench.csv, bench.md and pareto.png to --out-dir\n"
-               "(default docs/results). --quick: smaller images, 3 timed frames, 64 spp\n"
-               "reference, no 2048^2 / 400-sample atlas; the full sweep: 7 frames, 256 spp.\n"
+               "(default docs/results). --sweep full (the default): 7 timed frames, 256 spp\n"
+               "reference. --sweep quick (or --quick): smaller images, 3 timed frames, 64 spp\n"
+               "reference, no 2048^2 / 400-sample atlas. --sweep smoke: as quick, with one or two\n"
+               "configurations per mode (minutes; the form CI runs). --scene naming the Cornell\n"
+               "box measures it alone.\n"
                "--set changes the base settings under every configuration\n"
                "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n";
     default:
-        return "usage: voxatlas [view] [SCENE] [--width W --height H] [--camera ...] [--light ...]\n"
-               "        [--frames N] [--screenshot F.png] [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"
+        return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
+               "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"
+               "        [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"
                "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
-               "       voxatlas bench [--scene ...] [--quick] [--out-dir DIR]\n"
+               "       voxatlas bench [--scene ...] [--sweep smoke|quick|full] [--out-dir DIR]\n"
                "       voxatlas info SCENE [--set key=value ...]\n"
-               "SCENE defaults to the Cornell box. Without a display, view renders a headless\n"
-               "screenshot instead.\n";
+               "SCENE defaults to the Cornell box; --mode picks the GI mode the viewer starts in\n"
+               "(keys 1-3 switch). Without a display, view renders a headless screenshot instead.\n";
     }
 }
 

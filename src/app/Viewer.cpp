@@ -330,6 +330,10 @@ bool Viewer::writeScreenshot(const core::Image& image, const std::string& path) 
 
 bool Viewer::start(std::string& error) {
     if (!mRenderer.init(*mScene, mSettings, mShaders, error)) return false;
+    if (mConfig.mode != mMode) {
+        if (!mRenderer.setMode(mConfig.mode, error)) return false;
+        mMode = mConfig.mode;
+    }
     if (!mPresent.init(mShaders, error)) return false;
     if (!mUi.init(*mWindow, error)) return false;
     std::vector<HotkeyHelp> help = {{"W A S D", "move"}, {"Q / E", "down / up"},
@@ -475,8 +479,8 @@ int runViewer(const Config& config) {
         const std::string prefix = "no display: ";
         const std::string reason =
                 error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error;
-        say("no display (" + reason + "); rendering a headless screenshot to " + headless.outPath +
-                " instead");
+        say("no display (" + reason + "); rendering a headless screenshot instead: " +
+                std::filesystem::absolute(headless.outPath).lexically_normal().string());
         return runRender(headless);
     }
     Viewer viewer(config, std::move(scene), std::move(window), camera);

@@ -83,6 +83,22 @@ float shortMaxDistance(float sceneDiagonal) {
     return float(std::round(quarter / magnitude) * magnitude);
 }
 
+const char* sweepSizeName(SweepSize size) {
+    switch (size) {
+    case SweepSize::Smoke: return "smoke";
+    case SweepSize::Quick: return "quick";
+    case SweepSize::Full: return "full";
+    }
+    return "full";
+}
+
+std::optional<SweepSize> parseSweepSize(const std::string& name) {
+    for (SweepSize size : {SweepSize::Smoke, SweepSize::Quick, SweepSize::Full}) {
+        if (name == sweepSizeName(size)) return size;
+    }
+    return std::nullopt;
+}
+
 std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options) {
     const bool full = options.size == SweepSize::Full;
     const int progressiveFrames = std::max(16, options.minProgressiveFrames);
@@ -104,10 +120,13 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     atlasBase.base = true;
 
     if (options.size == SweepSize::Smoke) {
-        BenchConfiguration atlasSmall = atlas("res 256, 25 samples", 256, 25);
-        atlasSmall.base = true;
-        return {direct, voxelBase, voxelFast, atlasSmall,
-                progressive(256, 25, std::max(4, options.minProgressiveFrames))};
+        // 512^2 is the smallest atlas with room for Sponza's 17 k charts; few samples keep the
+        // gather cheap.
+        const int resolution = 512;
+        BenchConfiguration atlasFew = atlas("res 512, 25 samples", resolution, 25);
+        atlasFew.base = true;
+        return {direct, voxelBase, voxelFast, atlasFew,
+                progressive(resolution, 25, std::max(4, options.minProgressiveFrames))};
     }
 
     const std::string shortDistance = formatNumber(options.shortDistance);

@@ -15,6 +15,7 @@
 #include "render/FrameRenderer.h"
 #include "core/Settings.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,10 +37,14 @@ struct BenchConfiguration {
 };
 
 enum class SweepSize {
-    Smoke,   // a handful of cheap configurations, at least one per mode (tests)
+    Smoke,   // a handful of cheap configurations, at least one per mode (the CI form)
     Quick,   // everything that fits the --quick time budget
     Full,    // adds the expensive atlas settings (2048^2 texels, 400 samples)
 };
+
+// "smoke", "quick", "full" (`voxatlas bench --sweep NAME`, the report's sweep line).
+[[nodiscard]] const char* sweepSizeName(SweepSize size);
+[[nodiscard]] std::optional<SweepSize> parseSweepSize(const std::string& name);
 
 struct SweepOptions {
     SweepSize size = SweepSize::Full;

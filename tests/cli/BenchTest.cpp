@@ -1,8 +1,8 @@
-// `voxatlas bench` end to end, limited by VOXATLAS_BENCH_SMOKE=1 to the Cornell box and a
-// handful of cheap configurations so it gives a quick signal: the CSV has every column, every
-// number in it is finite, every mode the build can run has a row, and the markdown table and
-// the frontier are there. Also the clean refusals of bad input. The real `--quick` sweep runs
-// under the `bench` label (tests/bench/QuickBenchTest.cpp).
+// `voxatlas bench --sweep smoke` on the Cornell box alone (--scene names it), a handful of
+// cheap configurations for a quick signal: the CSV has every column, every number in it is
+// finite, every mode the build can run has a row, and the markdown table and the frontier are
+// there. Also the clean refusals of bad input. The same sweep over Sponza too runs under the
+// `bench` label (tests/bench/SmokeBenchTest.cpp).
 #include "BenchOutput.h"
 #include "Process.h"
 
@@ -19,10 +19,12 @@ namespace fs = std::filesystem;
 TEST(BenchCommand, SmokeSweepWritesCompleteCsvAndMarkdown) {
     const std::string dir = makeTempDir("bench-smoke");
     // A private reference cache, so the test neither depends on nor fills the user's.
-    const ProcessResult r = runVoxatlas({"bench", "--quick", "--out-dir", dir + "/out"},
-            // The smoke sweep takes about 15 s on 2 llvmpipe cores; 170 s leaves room for a
-            // loaded CI machine while staying under the 300 s ctest limit.
-            170, {"VOXATLAS_BENCH_SMOKE=1", "VOXATLAS_CACHE_DIR=" + dir + "/cache"});
+    const ProcessResult r = runVoxatlas({"bench", "--sweep", "smoke", "--scene",
+            std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box.gltf", "--out-dir",
+            dir + "/out"},
+            // The smoke sweep of the Cornell box alone takes about 15 s on 2 llvmpipe cores;
+            // 170 s leaves room for a loaded CI machine while staying under the 300 s limit.
+            170, {"VOXATLAS_CACHE_DIR=" + dir + "/cache"});
     ASSERT_FALSE(r.timedOut);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_NE(r.out.find("[1/"), std::string::npos)

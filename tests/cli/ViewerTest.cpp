@@ -203,16 +203,18 @@ TEST(ViewerInput, UnwritableScreenshotIsOneLineExit2) {
     EXPECT_NE(r.err.find("/nonexistent-dir/s.png"), std::string::npos) << r.err;
 }
 
-// No X server at all: the viewer says why in one line and renders what `voxatlas render` would.
+// No X server at all: the viewer says why in one line, with the screenshot's full path, and
+// renders what `voxatlas render` would, in the mode the viewer was asked to start in.
 TEST(ViewerNoDisplay, FallsBackToHeadlessScreenshot) {
     const std::string dir = makeTempDir("view-no-display");
     const ProcessResult r = runProcess({"/usr/bin/env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY",
-            "-C", dir, VOXATLAS_EXECUTABLE, "view", kCornell, "--screenshot", "x.png",
-            "--width", "96", "--height", "72"}, kTimeoutSeconds);
+            "-C", dir, VOXATLAS_EXECUTABLE, "view", kCornell, "--mode", "voxel", "--screenshot",
+            "x.png", "--width", "96", "--height", "72"}, kTimeoutSeconds);
     ASSERT_FALSE(r.timedOut);
     EXPECT_NE(r.err.find("voxatlas view: no display ("), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("rendering a headless screenshot to x.png instead"), std::string::npos)
-            << r.err;
+    EXPECT_NE(r.err.find("rendering a headless screenshot instead: " + dir + "/x.png"),
+            std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("(96x72, voxel,"), std::string::npos) << "not in voxel mode: " << r.err;
     if (r.exitCode == 1 && r.err.find("no OpenGL 4.5 context") != std::string::npos) {
         GTEST_SKIP() << "no headless OpenGL context either: " << r.err;
     }

@@ -5,6 +5,7 @@
 // agree. Regression test for atlas energy that was 0 (black) at 512^2 and swung between 0.1
 // and 3.2 with the sample set's rotation at 1024^2. Skipped where Sponza is not provided.
 #include "GpuTest.h"
+#include "Sponza.h"
 
 #include "gl/GpuProfiler.h"
 #include "gl/Shared.h"
@@ -35,8 +36,7 @@ struct Case {
 };
 
 TEST_F(AtlasSponzaGpuTest, IndirectEnergyAgainstTheReference) {
-    const std::string path = sponzaPathOrSkip();
-    if (path.empty()) GTEST_SKIP() << "Sponza not provided";
+    VOXATLAS_SPONZA_OR_SKIP(path);
     scene::Scene scene;
     std::string error;
     std::vector<std::string> warnings;

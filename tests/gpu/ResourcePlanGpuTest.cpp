@@ -2,6 +2,7 @@
 // `voxatlas info` reports for a plan are the voxel textures FrameRenderer holds in voxel mode,
 // the atlas bytes its atlas layers in atlas mode, and only the active mode holds any.
 #include "GpuTest.h"
+#include "Sponza.h"
 #include "TestScenes.h"
 
 #include "gi/voxel/VoxelizationManager.h"
@@ -66,8 +67,7 @@ TEST_F(ResourcePlanGpuTest, CornellBoxAllocatesItsPlan) {
 }
 
 TEST_F(ResourcePlanGpuTest, SponzaAllocatesItsPlan) {
-    const std::string path = sponzaPathOrSkip();
-    if (path.empty()) GTEST_SKIP();
+    VOXATLAS_SPONZA_OR_SKIP(path);
     const scene::Scene sponza = loadTestScene(path);
     Settings adaptive;
     adaptive.plan = PLAN_ADAPTIVE;

@@ -2,6 +2,7 @@
 // ../shared/assets at run time: a golden image under direct light, and voxel GI that ends
 // with finite pixels. Skipped with a one-line explanation where Sponza is not provided.
 #include "GpuTest.h"
+#include "Sponza.h"
 #include "ImageCompare.h"
 
 #include "gl/GpuProfiler.h"
@@ -48,8 +49,7 @@ core::Image renderSponza(const std::string& path, render::GiMode mode, int width
 }
 
 TEST_F(SponzaGpuTest, DirectLightGolden) {
-    const std::string path = sponzaPathOrSkip();
-    if (path.empty()) GTEST_SKIP() << "Sponza not provided";
+    VOXATLAS_SPONZA_OR_SKIP(path);
     const core::Image image = renderSponza(path, render::GiMode::Direct, 256, 144);
     ASSERT_FALSE(image.empty());
     EXPECT_TRUE(core::allFinite(image));
@@ -62,8 +62,7 @@ TEST_F(SponzaGpuTest, DirectLightGolden) {
 }
 
 TEST_F(SponzaGpuTest, VoxelGiEndsWithFinitePixels) {
-    const std::string path = sponzaPathOrSkip();
-    if (path.empty()) GTEST_SKIP() << "Sponza not provided";
+    VOXATLAS_SPONZA_OR_SKIP(path);
     const core::Image direct = renderSponza(path, render::GiMode::Direct, 96, 54);
     const core::Image voxel = renderSponza(path, render::GiMode::Voxel, 96, 54);
     ASSERT_FALSE(voxel.empty());

@@ -39,21 +39,6 @@ void GpuTest::TearDown() {
     mContext.reset();
 }
 
-std::string sponzaPathOrSkip() {
-    const char* env = std::getenv("VOXATLAS_SPONZA");
-    const std::string path = env && *env ? env : sourcePath("../shared/assets/sponza/Sponza.gltf");
-    if (std::filesystem::exists(path)) return path;
-    const std::string reason = "Sponza not found at " + path +
-            ": put the Khronos glTF Sponza there or set VOXATLAS_SPONZA (see README)";
-    const char* ci = std::getenv("CI");
-    if (ci && *ci) {
-        ADD_FAILURE() << reason;
-    } else {
-        std::printf("%s\n", reason.c_str());
-    }
-    return "";
-}
-
 std::string sourcePath(const std::string& relative) {
     return std::string(VOXATLAS_DATA_DIR) + "/" + relative;
 }

@@ -49,11 +49,6 @@ struct RenderRequest {
 [[nodiscard]] bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x,
         int y, float planeY, glm::vec3& point);
 
-// Sponza's glTF: $VOXATLAS_SPONZA, else ../shared/assets/sponza/Sponza.gltf beside the source
-// tree. Empty (after a GTEST_SKIP with the reason, or a failure when $CI is set, since CI
-// always has it) when the file is missing.
-[[nodiscard]] std::string sponzaPathOrSkip();
-
 // Absolute path of a file in the source tree (assets/..., tests/...).
 [[nodiscard]] std::string sourcePath(const std::string& relative);
 

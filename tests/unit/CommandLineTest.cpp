@@ -91,6 +91,16 @@ TEST(CommandLine, ParsesViewScripting) {
     EXPECT_EQ(config->keys[1].key, "F12");
 }
 
+TEST(CommandLine, ViewStartsInTheModeAsked) {
+    std::string error;
+    const auto config = parse({"view", "--mode", "voxel"}, error);
+    ASSERT_TRUE(config) << error;
+    EXPECT_EQ(config->mode, render::GiMode::Voxel);
+    const auto bench = parse({"bench", "--sweep", "smoke"}, error);
+    ASSERT_TRUE(bench) << error;
+    EXPECT_EQ(bench->sweep, bench::SweepSize::Smoke);
+}
+
 struct Rejection {
     std::vector<const char*> args;
     const char* mentions;
@@ -131,6 +141,8 @@ INSTANTIATE_TEST_SUITE_P(BadInput, CommandLineRejects, ::testing::Values(
         Rejection{{"view", "--frames", "0"}, "--frames"},
         Rejection{{"view", "--keys", "x:G"}, "--keys"},
         Rejection{{"view", "--out", "a.png"}, "not an option"},
+        Rejection{{"view", "--mode", "reference"}, "real-time modes"},
+        Rejection{{"bench", "--sweep", "huge"}, "smoke, quick or full"},
         Rejection{{"info"}, "SCENE"}));
 
 } // namespace

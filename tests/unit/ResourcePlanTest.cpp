@@ -2,6 +2,7 @@
 // one scene-centred level, Sponza a camera-centred cascade reaching all of it; the fixed plan
 // reports the thesis' allocation as given; lights that cannot reach the scene are left out.
 #include "render/ResourcePlan.h"
+#include "Sponza.h"
 
 #include "GpuTest.h"
 #include "TestScenes.h"
@@ -54,8 +55,7 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
 }
 
 TEST(ResourcePlan, SponzaIsACameraCascadeReachingAllOfIt) {
-    const std::string path = test::sponzaPathOrSkip();
-    if (path.empty()) GTEST_SKIP();
+    VOXATLAS_SPONZA_OR_SKIP(path);
     const scene::Scene sponza = test::loadTestScene(path);
     const ResourcePlan plan = planResources(sponza, sponza.lights, adaptive(32), startEye(sponza));
     const glm::vec3 size = sponza.bounds.size();
