@@ -69,7 +69,6 @@ public:
     virtual bool configure(const Settings& settings, std::string& error) = 0;
     virtual void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) = 0;
     virtual GiOutputs outputs() const = 0;
-    virtual std::vector<gl::MemoryItem> memory() const = 0;
     // One line for the overlay: the state a user tunes against (resolution, progress).
     virtual std::string status() const { return ""; }
     // How far from the camera the technique gathers light (m), for controls that scale with

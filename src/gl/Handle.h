@@ -3,6 +3,8 @@
 // destructor deletes it. Copies are impossible, so an object is deleted exactly once.
 #pragma once
 
+#include "gl/MemoryRegistry.h"
+
 #include <glad/gl.h>
 
 #include <utility>
@@ -25,7 +27,8 @@ public:
 
     GLuint id() const noexcept { return mId; }
     explicit operator bool() const noexcept { return mId != 0; }
-    // Gives up ownership, for interop with code that deletes the object itself.
+    // Gives up ownership, for interop with code that deletes the object itself. A texture's or
+    // buffer's entry in gl/MemoryRegistry.h stays: its memory is still allocated.
     GLuint release() noexcept { return std::exchange(mId, 0); }
     void reset(GLuint id = 0) noexcept {
         if (mId) Traits::destroy(mId);
@@ -36,8 +39,19 @@ private:
     GLuint mId = 0;
 };
 
-struct BufferTraits { static void destroy(GLuint id) { glDeleteBuffers(1, &id); } };
-struct TextureTraits { static void destroy(GLuint id) { glDeleteTextures(1, &id); } };
+// Textures and buffers leave the memory record (gl/MemoryRegistry.h) as they are deleted.
+struct BufferTraits {
+    static void destroy(GLuint id) {
+        forgetAllocation(StorageKind::Buffer, id);
+        glDeleteBuffers(1, &id);
+    }
+};
+struct TextureTraits {
+    static void destroy(GLuint id) {
+        forgetAllocation(StorageKind::Texture, id);
+        glDeleteTextures(1, &id);
+    }
+};
 struct FramebufferTraits { static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); } };
 struct VertexArrayTraits { static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); } };
 struct SamplerTraits { static void destroy(GLuint id) { glDeleteSamplers(1, &id); } };

@@ -10,6 +10,13 @@ void label(GLenum type, GLuint id, const char* name) {
     if (name && *name) glObjectLabel(type, id, -1, name);
 }
 
+// Array layers and cube faces count in size.z. textureBytes() halves z at each level, which
+// is right only for 3D textures: the array helpers allocate a single level.
+void recordTexture(GLuint id, const char* name, GLenum internalFormat, glm::ivec3 size,
+        int levels) {
+    recordAllocation(StorageKind::Texture, id, name, textureBytes(internalFormat, size, levels));
+}
+
 } // namespace
 
 std::size_t bytesPerTexel(GLenum internalFormat) {
@@ -27,10 +34,13 @@ std::size_t bytesPerTexel(GLenum internalFormat) {
 }
 
 Buffer createBuffer(std::size_t bytes, const void* data, GLbitfield flags, const char* name) {
+    // GL refuses empty storage; an empty table still needs an object to bind.
+    const std::size_t allocated = std::max<std::size_t>(bytes, 1);
     GLuint id = 0;
     glCreateBuffers(1, &id);
-    glNamedBufferStorage(id, GLsizeiptr(std::max<std::size_t>(bytes, 1)), data, flags);
+    glNamedBufferStorage(id, GLsizeiptr(allocated), data, flags);
     label(GL_BUFFER, id, name);
+    recordAllocation(StorageKind::Buffer, id, name, allocated);
     return Buffer(id);
 }
 
@@ -39,6 +49,7 @@ Texture createTexture2D(GLenum internalFormat, glm::ivec2 size, int levels, cons
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
     glTextureStorage2D(id, levels, internalFormat, size.x, size.y);
     label(GL_TEXTURE, id, name);
+    recordTexture(id, name, internalFormat, {size, 1}, levels);
     return Texture(id);
 }
 
@@ -47,6 +58,7 @@ Texture createTexture3D(GLenum internalFormat, glm::ivec3 size, int levels, cons
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     glTextureStorage3D(id, levels, internalFormat, size.x, size.y, size.z);
     label(GL_TEXTURE, id, name);
+    recordTexture(id, name, internalFormat, size, levels);
     return Texture(id);
 }
 
@@ -55,6 +67,7 @@ Texture createTextureCubeArray(GLenum internalFormat, int size, int layers, cons
     glCreateTextures(GL_TEXTURE_CUBE_MAP_ARRAY, 1, &id);
     glTextureStorage3D(id, 1, internalFormat, size, size, 6 * layers);
     label(GL_TEXTURE, id, name);
+    recordTexture(id, name, internalFormat, {size, size, 6 * layers}, 1);
     return Texture(id);
 }
 
@@ -64,6 +77,7 @@ Texture createTexture2DArray(GLenum internalFormat, glm::ivec2 size, int layers,
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
     glTextureStorage3D(id, 1, internalFormat, size.x, size.y, layers);
     label(GL_TEXTURE, id, name);
+    recordTexture(id, name, internalFormat, {size, layers}, 1);
     return Texture(id);
 }
 

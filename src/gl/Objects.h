@@ -1,9 +1,11 @@
 // Creation helpers for the GL objects the passes use. Each allocates immutable storage with
-// the DSA entry points and labels the object (the label shows in debug output and captures).
-// textureBytes() gives the size of what was allocated, for the memory reports.
+// the DSA entry points, labels the object (the label shows in debug output and captures) and
+// records the storage's size in gl/MemoryRegistry.h, which the memory reports read. They are
+// the only place in src/ that allocates texture or buffer storage.
 #pragma once
 
 #include "gl/Handle.h"
+#include "gl/MemoryRegistry.h"
 
 #include <glm/glm.hpp>
 
@@ -16,14 +18,9 @@ namespace gi::gl {
 // Bytes per texel of the sized internal formats the project uses (0 for unknown formats).
 [[nodiscard]] std::size_t bytesPerTexel(GLenum internalFormat);
 
-// Bytes of immutable storage for a texture of `size` texels with `levels` mip levels.
+// Bytes of immutable storage for a texture of `size` texels with `levels` mip levels (layers
+// and cube faces count in size.z).
 [[nodiscard]] std::size_t textureBytes(GLenum internalFormat, glm::ivec3 size, int levels);
-
-// One line of a memory report: what a resource is and how many bytes it allocated.
-struct MemoryItem {
-    std::string name;
-    std::size_t bytes = 0;
-};
 
 [[nodiscard]] Buffer createBuffer(std::size_t bytes, const void* data, GLbitfield flags,
         const char* label);

@@ -27,6 +27,7 @@ ResourcePlan FrameRenderer::planFor(const Settings& requested) const {
 
 bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
         gl::ShaderLibrary& shaders, std::string& error) {
+    const gl::MemoryScope memoryScope(mMemory);
     mShaders = &shaders;
     mSceneDescription = &scene;
     mAllLights = scene.lights;
@@ -45,6 +46,7 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
 }
 
 bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
+    const gl::MemoryScope memoryScope(mMemory);
     ResourcePlan plan = planFor(requested);
     const Settings settings = applyPlan(requested, plan);
     std::vector<scene::Light> lights = plannedLights(mAllLights, plan);
@@ -71,6 +73,7 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
     // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
     if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
     std::string error;
+    const gl::MemoryScope memoryScope(mOccupancyMemory);
     if (!mOccupancy) {
         mOccupancy = std::make_unique<voxel::VoxelizationManager>();
         if (!mOccupancy->init(*mShaders, *mSceneDescription, error)) {
@@ -90,6 +93,7 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
 
 bool FrameRenderer::setMode(GiMode mode, std::string& error) {
     if (mode == mMode && (mGi || mode == GiMode::Direct)) return true;
+    const gl::MemoryScope memoryScope(mMemory);
     std::unique_ptr<GiTechnique> technique;
     if (mode == GiMode::Voxel) {
         technique = std::make_unique<voxel::VoxelizationManager>();
@@ -110,6 +114,7 @@ bool FrameRenderer::setMode(GiMode mode, std::string& error) {
 }
 
 void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
+    const gl::MemoryScope memoryScope(mMemory);
     mAllLights = lights;
     mPlan = planFor(mRequested);
     mSettings = applyPlan(mRequested, mPlan);
@@ -119,6 +124,7 @@ void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
 }
 
 void FrameRenderer::setPose(const scene::Scene& scene) {
+    const gl::MemoryScope memoryScope(mMemory);
     mScene->updateDynamic(scene);
     if (mScene->geometryVersion() != mShadowGeometry) {
         mShadowGeometry = mScene->geometryVersion();
@@ -138,6 +144,7 @@ void FrameRenderer::resizeTargets(glm::ivec2 size) {
 
 void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSize,
         OutputComponent output, gl::GpuProfiler& profiler) {
+    const gl::MemoryScope memoryScope(mMemory);
     profiler.newFrame();
     resizeTargets(outputSize * mSettings.supersample);
     mLastOutput = output;
@@ -208,19 +215,8 @@ core::Image FrameRenderer::readback() const {
 }
 
 std::vector<gl::MemoryItem> FrameRenderer::memory() const {
-    std::vector<gl::MemoryItem> items = mScene->memory();
-    for (const gl::MemoryItem& item : mShadows.memory()) items.push_back(item);
-    if (mGi) {
-        for (const gl::MemoryItem& item : mGi->memory()) items.push_back(item);
-    }
-    if (mOccupancy) {
-        for (const gl::MemoryItem& item : mOccupancy->memory()) {
-            items.push_back({"atlas/occupancy/" + item.name, item.bytes});
-        }
-    }
-    const glm::ivec3 size(mRenderSize, 1);
-    items.push_back({"frame/radiance", gl::textureBytes(GL_RGBA32F, size, 1)});
-    items.push_back({"frame/depth", gl::textureBytes(GL_DEPTH_COMPONENT32F, size, 1)});
+    std::vector<gl::MemoryItem> items = mMemory.report();
+    for (gl::MemoryItem& item : mOccupancyMemory.report()) items.push_back(std::move(item));
     return items;
 }
 

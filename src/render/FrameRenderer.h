@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/GpuProfiler.h"
+#include "gl/MemoryRegistry.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "render/ForwardPass.h"
@@ -66,6 +67,8 @@ public:
     glm::ivec2 renderSize() const { return mRenderSize; }
     const scene::GpuScene& gpuScene() const { return *mScene; }
 
+    // The textures and buffers this renderer holds now, a row per label (gl/MemoryRegistry.h);
+    // the atlas' voxel occupancy under "atlas/occupancy/".
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
     // The active GI technique, or nullptr in direct mode.
     const GiTechnique* technique() const { return mGi.get(); }
@@ -78,6 +81,9 @@ private:
     // mLights the lights it keeps for the GPU (shadow maps, injection, shading).
     [[nodiscard]] ResourcePlan planFor(const Settings& requested) const;
 
+    // What the entry points allocate is recorded as this renderer's (memory()).
+    gl::MemoryOwner mMemory;
+    gl::MemoryOwner mOccupancyMemory{"atlas/occupancy/"};
     Settings mSettings;     // in effect: mRequested with the plan's sizes
     Settings mRequested;    // as given to init() / setSettings()
     ResourcePlan mPlan;

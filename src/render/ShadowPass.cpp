@@ -170,10 +170,6 @@ void ShadowPass::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SHADOWS, mShadowTable.id());
 }
 
-std::vector<gl::MemoryItem> ShadowPass::memory() const {
-    return memoryFor(mLayers2D, mLayersCube, mResolution);
-}
-
 std::vector<gl::MemoryItem> ShadowPass::memoryFor(int layers2D, int layersCube, int resolution) {
     const int res2D = layers2D > 0 ? resolution : 1;
     const int resCube = layersCube > 0 ? resolution : 1;

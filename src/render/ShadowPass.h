@@ -39,7 +39,6 @@ public:
     // Forces the next execute to re-render (geometry moved).
     void invalidate() { mDirty = true; }
 
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
     // What setLights(lights, ..., settings) would allocate, before allocating it.
     [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(const std::vector<scene::Light>& lights,
             const ShadowSettings& settings);

@@ -77,12 +77,11 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         for (const std::uint32_t index : primitive.indices) indices.push_back(base + index);
         if (draw.indexCount > 0) mDraws.push_back(draw);
     }
-    mVertexBytes = vertices.size() * sizeof(SceneVertex);
-    mIndexBytes = indices.size() * sizeof(std::uint32_t);
     // Animated instances rewrite their vertices every frame (updateDynamic).
-    mVertices = gl::createBuffer(mVertexBytes, vertices.data(),
+    mVertices = gl::createBuffer(vertices.size() * sizeof(SceneVertex), vertices.data(),
             mDynamicRanges.empty() ? 0 : GL_DYNAMIC_STORAGE_BIT, "scene/vertices");
-    mIndices = gl::createBuffer(mIndexBytes, indices.data(), 0, "scene/indices");
+    mIndices = gl::createBuffer(indices.size() * sizeof(std::uint32_t), indices.data(), 0,
+            "scene/indices");
 
     mVertexArray = gl::createVertexArray("scene/vertex_array");
     const GLuint vao = mVertexArray.id();
@@ -101,6 +100,8 @@ void GpuScene::uploadGeometry(const Scene& scene) {
 }
 
 void GpuScene::uploadMaterials(const Scene& scene) {
+    // One memory-report row for them all (the white fallback too), however many there are.
+    const gl::MemoryGroup textures("scene/textures");
     for (const Texture& texture : scene.textures) {
         const int levels = gl::fullMipCount(std::max(texture.width, texture.height));
         gl::Texture gpu = gl::createTexture2D(texture.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
@@ -112,7 +113,6 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         glTextureParameteri(gpu.id(), GL_TEXTURE_WRAP_T, texture.wrapT);
         glTextureParameteri(gpu.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(gpu.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        mTextureBytes += gl::textureBytes(GL_RGBA8, {texture.width, texture.height, 1}, levels);
         mTextures.push_back(std::move(gpu));
     }
     mWhite = gl::createTexture2D(GL_RGBA8, {1, 1}, 1, "scene/white");
@@ -214,11 +214,6 @@ void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray
     }
     glDisable(GL_CULL_FACE);
     glBindVertexArray(0);
-}
-
-std::vector<gl::MemoryItem> GpuScene::memory() const {
-    return {{"scene/vertices", mVertexBytes}, {"scene/indices", mIndexBytes},
-            {"scene/textures", mTextureBytes}};
 }
 
 } // namespace gi::scene

@@ -66,7 +66,6 @@ public:
     const gl::Buffer& materialBuffer() const { return mMaterials; }
     int lightCount() const { return mLightCount; }
     const Aabb& bounds() const { return mBounds; }
-    std::vector<gl::MemoryItem> memory() const;
 
 private:
     void uploadGeometry(const Scene& scene);
@@ -79,7 +78,6 @@ private:
     gl::Sampler mSampler;
     std::vector<Draw> mDraws;
     std::vector<int> mBaseColorTexture, mEmissiveTexture;   // per material, -1 = none
-    std::size_t mVertexBytes = 0, mIndexBytes = 0, mTextureBytes = 0;
     int mLightCount = 0;
     Aabb mBounds;
     // The material table as authored; uploaded with its emission times mExposure.

@@ -39,6 +39,14 @@ void GpuTest::TearDown() {
     mContext.reset();
 }
 
+std::size_t bytesWithPrefix(const std::vector<gl::MemoryItem>& items, const std::string& prefix) {
+    std::size_t total = 0;
+    for (const gl::MemoryItem& item : items) {
+        if (item.name.rfind(prefix, 0) == 0) total += item.bytes;
+    }
+    return total;
+}
+
 std::string sourcePath(const std::string& relative) {
     return std::string(VOXATLAS_DATA_DIR) + "/" + relative;
 }

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gi::test {
 
@@ -43,6 +44,10 @@ struct RenderRequest {
 
 // Renders a scene built in code (lights and cameras as given; no defaults are added).
 [[nodiscard]] core::Image renderScene(const scene::Scene& scene, const RenderRequest& request);
+
+// Bytes of the memory-report rows (FrameRenderer::memory()) whose names start with `prefix`.
+[[nodiscard]] std::size_t bytesWithPrefix(const std::vector<gl::MemoryItem>& items,
+        const std::string& prefix);
 
 // World-space point seen through the centre of pixel (x, y) on the plane y = planeY, or
 // false if the pixel's ray misses it. Images run top to bottom.

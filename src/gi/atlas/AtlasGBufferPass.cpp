@@ -89,9 +89,4 @@ void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProf
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-std::vector<gl::MemoryItem> AtlasGBufferPass::memory() const {
-    return {{"atlas/gbuffer_depth",
-            gl::textureBytes(GL_DEPTH_COMPONENT32F, glm::ivec3(mResolution, mResolution, 1), 1)}};
-}
-
 } // namespace gi::atlas

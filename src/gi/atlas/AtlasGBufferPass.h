@@ -38,7 +38,6 @@ public:
     // Attaches the layers; false with a message if the framebuffer is incomplete.
     bool attach(const AtlasTextures& textures, std::string& error);
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
     gl::ProgramRef mExact, mConservative, mArea;

@@ -26,18 +26,17 @@ void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas, bool follo
         v.info[1] = mesh.doubleSided[a.source] ? 1.0f : 0.0f;
     }
     mVertexCount = vertices.size();
-    mVertexBytes = vertices.size() * sizeof(GpuAtlasVertex);
     mSources = {};
-    mSourceBytes = 0;
     if (followsPose && !atlas.vertices.empty()) {
         std::vector<std::uint32_t> sources(atlas.vertices.size());
         for (std::size_t i = 0; i < sources.size(); ++i) sources[i] = atlas.vertices[i].source;
-        mSourceBytes = sources.size() * sizeof(std::uint32_t);
-        mSources = gl::createBuffer(mSourceBytes, sources.data(), 0, "atlas/vertex_sources");
+        mSources = gl::createBuffer(sources.size() * sizeof(std::uint32_t), sources.data(), 0,
+                "atlas/vertex_sources");
     }
-    mIndexBytes = atlas.indices.size() * sizeof(std::uint32_t);
-    mVertices = gl::createBuffer(mVertexBytes, vertices.data(), 0, "atlas/vertices");
-    mIndices = gl::createBuffer(mIndexBytes, atlas.indices.data(), 0, "atlas/indices");
+    mVertices = gl::createBuffer(vertices.size() * sizeof(GpuAtlasVertex), vertices.data(), 0,
+            "atlas/vertices");
+    mIndices = gl::createBuffer(atlas.indices.size() * sizeof(std::uint32_t), atlas.indices.data(),
+            0, "atlas/indices");
     mVertexArray = gl::createVertexArray("atlas/vertex_array");
     const GLuint vao = mVertexArray.id();
     glVertexArrayVertexBuffer(vao, 0, mVertices.id(), 0, sizeof(GpuAtlasVertex));
@@ -54,12 +53,6 @@ void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas, bool follo
     attribute(ATTR_COLOR, 4, offsetof(GpuAtlasVertex, color));
     attribute(ATTR_ATLAS_UV, 2, offsetof(GpuAtlasVertex, atlasUv));
     attribute(ATTR_ATLAS_INFO, 2, offsetof(GpuAtlasVertex, info));
-}
-
-std::vector<gl::MemoryItem> AtlasGeometry::memory() const {
-    std::vector<gl::MemoryItem> items = {{"atlas/vertices", mVertexBytes}, {"atlas/indices", mIndexBytes}};
-    if (mSourceBytes > 0) items.push_back({"atlas/vertex_sources", mSourceBytes});
-    return items;
 }
 
 } // namespace gi::atlas

@@ -32,12 +32,11 @@ public:
     const gl::Buffer& vertexBuffer() const { return mVertices; }
     const gl::Buffer& sources() const { return mSources; }   // empty unless followsPose
     std::size_t vertexCount() const { return mVertexCount; }
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
     gl::Buffer mVertices, mIndices, mSources;
     gl::VertexArray mVertexArray;
-    std::size_t mVertexBytes = 0, mIndexBytes = 0, mSourceBytes = 0, mVertexCount = 0;
+    std::size_t mVertexCount = 0;
 };
 
 } // namespace gi::atlas

@@ -232,16 +232,6 @@ GiOutputs AtlasGi::outputs() const {
     return out;
 }
 
-std::vector<gl::MemoryItem> AtlasGi::memory() const {
-    std::vector<gl::MemoryItem> items = mTextures.memory();
-    for (const gl::MemoryItem& item : mGBuffer.memory()) items.push_back(item);
-    for (const gl::MemoryItem& item : mGeometry.memory()) items.push_back(item);
-    items.push_back({"atlas/samples", gl::textureBytes(GL_RG32F, {mSettings.samples, 1, 1}, 1)});
-    for (const gl::MemoryItem& item : mSenderSampling.memory()) items.push_back(item);
-    for (const gl::MemoryItem& item : mResolve.memory()) items.push_back(item);
-    return items;
-}
-
 } // namespace gi::atlas
 
 namespace gi::atlas {

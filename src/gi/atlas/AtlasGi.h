@@ -38,7 +38,6 @@ public:
     bool configure(const Settings& settings, std::string& error) override;
     void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
     GiOutputs outputs() const override;
-    std::vector<gl::MemoryItem> memory() const override;
 
     // Samples per texel accumulated into the lit atlas so far (progressive mode's progress).
     int accumulatedSamples() const { return mSamplesDone; }

@@ -51,10 +51,4 @@ void AtlasResolvePass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-std::vector<gl::MemoryItem> AtlasResolvePass::memory() const {
-    const glm::ivec3 size(mSize, 1);
-    return {{"atlas/indirect", gl::textureBytes(GL_RGBA16F, size, 1)},
-            {"atlas/resolve_depth", gl::textureBytes(GL_DEPTH_COMPONENT32F, size, 1)}};
-}
-
 } // namespace gi::atlas

@@ -33,7 +33,6 @@ public:
 
     const gl::Texture& indirect() const { return mIndirect; }
     glm::ivec2 size() const { return mSize; }
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
     gl::ProgramRef mProgram;

@@ -72,12 +72,4 @@ void AtlasSenderSamplingPass::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_POOL, mPoints.id());
 }
 
-std::vector<gl::MemoryItem> AtlasSenderSamplingPass::memory() const {
-    return {{"atlas/sender_sampling_rows", std::size_t(mResolution) * sizeof(float)},
-            {"atlas/sender_sampling_blocks",
-                    std::size_t(mResolution) * blocksPerRow(mResolution) * sizeof(float)},
-            {"atlas/sender_sampling_pool",
-                    std::size_t(mSamples) * ATLAS_POOL_STRIDE * sizeof(GLuint)}};
-}
-
 } // namespace gi::atlas

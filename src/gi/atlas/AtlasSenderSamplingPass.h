@@ -37,7 +37,6 @@ public:
             bool table, gl::GpuProfiler& profiler);
     // Binds the table and the pool for a consumer (the gather).
     void bind() const;
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
     gl::ProgramRef mRows, mPrefix, mPool;

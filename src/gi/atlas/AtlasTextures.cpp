@@ -28,8 +28,6 @@ void AtlasTextures::allocate(int size) {
     lit = layer(kLitFormat, size, GL_LINEAR, "atlas/lit");
 }
 
-std::vector<gl::MemoryItem> AtlasTextures::memory() const { return memoryFor(resolution); }
-
 std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution) {
     const glm::ivec3 size(resolution, resolution, 1);
     return {{"atlas/direct", gl::textureBytes(kDirectFormat, size, 1)},

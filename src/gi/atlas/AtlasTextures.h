@@ -20,7 +20,6 @@ struct AtlasTextures {
     gl::Texture lit;      // RGBA16F: rgb = E_ind (W/m^2) dilated into the gutters
 
     void allocate(int resolution);
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
     // What allocate(resolution) would take, before taking it.
     [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int resolution);
 };

@@ -52,10 +52,4 @@ void ConeTracePass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-std::vector<gl::MemoryItem> ConeTracePass::memory() const {
-    const glm::ivec3 size(mSize, 1);
-    return {{"voxel/indirect", gl::textureBytes(GL_RGBA16F, size, 1)},
-            {"voxel/trace_depth", gl::textureBytes(GL_DEPTH_COMPONENT32F, size, 1)}};
-}
-
 } // namespace gi::voxel

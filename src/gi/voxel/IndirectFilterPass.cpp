@@ -32,8 +32,4 @@ void IndirectFilterPass::execute(const gl::Texture& source, glm::ivec2 size,
     glUseProgram(0);
 }
 
-std::vector<gl::MemoryItem> IndirectFilterPass::memory() const {
-    return {{"voxel/indirect_filtered", gl::textureBytes(GL_RGBA16F, {mSize, 1}, 1)}};
-}
-
 } // namespace gi::voxel

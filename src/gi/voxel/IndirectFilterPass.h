@@ -20,7 +20,6 @@ public:
     void execute(const gl::Texture& source, glm::ivec2 size, const gl::Buffer& voxelUniforms,
             gl::GpuProfiler& profiler);
     const gl::Texture& result() const { return mResult; }
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
     gl::ProgramRef mProgram;

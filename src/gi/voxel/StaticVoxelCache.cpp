@@ -44,13 +44,4 @@ void StaticVoxelCache::release() {
     *this = StaticVoxelCache();
 }
 
-std::vector<gl::MemoryItem> StaticVoxelCache::memory() const {
-    if (!mAlbedo) return {};
-    const glm::ivec3 size(mResolution, mResolution, mResolution * mLevels);
-    return {{"voxel/static/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
-            {"voxel/static/normal", gl::textureBytes(GL_RGBA8_SNORM, size, 1)},
-            {"voxel/static/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
-            {"voxel/static/lock", gl::textureBytes(GL_R32UI, size, 1)}};
-}
-
 } // namespace gi::voxel

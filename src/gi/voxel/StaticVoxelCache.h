@@ -22,7 +22,6 @@ public:
     bool restore(const VoxelTextures& textures) const;
     void release();
     [[nodiscard]] bool allocated() const { return bool(mAlbedo); }
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
 
 private:
     gl::Texture mAlbedo, mNormal, mIrradiance, mLock;

@@ -43,10 +43,6 @@ void VoxelTextures::clear() const {
     glClearTexImage(lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
 }
 
-std::vector<gl::MemoryItem> VoxelTextures::memory() const {
-    return memoryFor(resolution, levels);
-}
-
 std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l) {
     const glm::ivec3 size(v, v, v * l);
     return {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},

@@ -27,7 +27,6 @@ struct VoxelTextures {
     void allocate(int v, int l);
     [[nodiscard]] int pyramidLevels() const;   // log2(v): mip 0 is (v/2)^3, the last 1^3
     void clear() const;
-    [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
     // What allocate(v, l) allocates, before allocating it.
     [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int v, int l);
 };

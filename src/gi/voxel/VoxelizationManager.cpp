@@ -253,16 +253,6 @@ GiOutputs VoxelizationManager::outputs() const {
     return out;
 }
 
-std::vector<gl::MemoryItem> VoxelizationManager::memory() const {
-    std::vector<gl::MemoryItem> items = mTextures.memory();
-    for (const gl::MemoryItem& item : mStaticCache.memory()) items.push_back(item);
-    for (const gl::MemoryItem& item : mTrace.memory()) items.push_back(item);
-    if (mSettings.filterRadius > 0) {
-        for (const gl::MemoryItem& item : mFilter.memory()) items.push_back(item);
-    }
-    return items;
-}
-
 } // namespace gi::voxel
 
 namespace gi::voxel {

@@ -32,7 +32,6 @@ public:
     bool configure(const Settings& settings, std::string& error) override;
     void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
     GiOutputs outputs() const override;
-    std::vector<gl::MemoryItem> memory() const override;
     std::string status() const override;
     // The diagonal of the coarsest cascade level.
     float gatherReach() const override;
