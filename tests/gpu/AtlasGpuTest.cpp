@@ -1,82 +1,15 @@
-// Texture-atlas GI on a real context. Probes whose expected values come from geometry and
-// radiometry (texel positions, coverage, an emitter's analytic irradiance, occlusion through
-// the voxel occupancy), the method's defining property (the indirect light does not depend on
-// the view), convergence of the area estimator, progressive accumulation, extremes, and
-// golden images of the Cornell box.
-#include "GpuTest.h"
+// Texture-atlas GI on a real context: texel positions and coverage round-trip to the scene's
+// geometry, the method's defining property (the indirect light does not depend on the view),
+// the memory report, and golden images of the Cornell box. Emitter probes are in
+// AtlasEmitterGpuTest.cpp, convergence and settings in AtlasConvergenceGpuTest.cpp.
+#include "AtlasGpuTestSupport.h"
 #include "ImageCompare.h"
-#include "TestScenes.h"
 
-#include "gi/atlas/AtlasGi.h"
-#include "gi/voxel/VoxelizationManager.h"
-
-#include <glad/gl.h>
-
-#include <glm/gtc/matrix_inverse.hpp>
-
-#include <cmath>
-#include <optional>
+#include <algorithm>
 
 namespace gi::test {
 namespace {
 
-// Small atlases and sample counts keep each test to seconds on llvmpipe; the disk cache is
-// off so tests never touch the user's cache directory.
-Settings atlasSettings(int resolution = 256, int samples = 64) {
-    Settings settings;
-    settings.atlas.resolution = resolution;
-    settings.atlas.samples = samples;
-    settings.atlas.cache = false;
-    return settings;
-}
-
-std::vector<glm::vec4> readAtlas(const gl::Texture& texture, int resolution) {
-    std::vector<glm::vec4> texels(std::size_t(resolution) * std::size_t(resolution));
-    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
-            GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
-    return texels;
-}
-
-// Atlas-GI frames of one scene; the renderer stays alive for read-backs.
-class AtlasFrame {
-public:
-    AtlasFrame(const scene::Scene& scene, const Settings& settings) : mScene(scene) {
-        std::string error;
-        EXPECT_TRUE(mRenderer.init(mScene, settings, mShaders, error)) << error;
-        EXPECT_TRUE(mRenderer.setMode(render::GiMode::Atlas, error)) << error;
-    }
-    void render(glm::ivec2 size, render::OutputComponent output = render::OutputComponent::Final,
-            int frames = 1, std::optional<scene::Camera> camera = std::nullopt) {
-        const scene::CameraView view = scene::cameraFromScene(
-                camera ? *camera : mScene.cameras[0], float(size.x) / float(size.y), mScene.bounds);
-        gl::GpuProfiler profiler;
-        for (int i = 0; i < frames; ++i) mRenderer.render(view, size, output, profiler);
-        profiler.flush();
-    }
-    const atlas::AtlasGi& gi() const {
-        return static_cast<const atlas::AtlasGi&>(*mRenderer.technique());
-    }
-    // The lit layer in W/(m^2 sr): the atlas holds it times the scene's pre-exposure
-    // (scene/Exposure.h).
-    std::vector<glm::vec4> lit() const {
-        std::vector<glm::vec4> texels = readAtlas(gi().textures().lit, gi().textures().resolution);
-        const float exposure = mRenderer.gpuScene().exposure();
-        for (glm::vec4& t : texels) t = glm::vec4(glm::vec3(t) / exposure, t.a);
-        return texels;
-    }
-    core::Image image() const { return mRenderer.readback(); }
-    render::FrameRenderer& renderer() { return mRenderer; }
-
-private:
-    scene::Scene mScene;
-    gl::ShaderLibrary mShaders;
-    render::FrameRenderer mRenderer;
-};
-
-glm::dvec2 texelPosition(const atlas::Atlas& atlas, std::size_t triangle, int corner) {
-    return glm::dvec2(atlas.vertices[atlas.indices[3 * triangle + std::size_t(corner)]].uv) *
-            double(atlas.resolution);
-}
 
 // World position of the surface point at atlas texel-space point p inside triangle t.
 glm::dvec3 worldAt(
@@ -91,22 +24,6 @@ glm::dvec3 worldAt(
                 mesh.positions[atlas.vertices[atlas.indices[3 * t + std::size_t(k)]].source]);
     };
     return (1.0 - w1 - w2) * corner(0) + w1 * corner(1) + w2 * corner(2);
-}
-
-// The atlas texel of world point p on triangle t (barycentric in world space).
-glm::ivec2 texelOf(
-        const atlas::AtlasMesh& mesh, const atlas::Atlas& atlas, std::size_t t, glm::dvec3 p) {
-    const auto corner = [&](int k) {
-        return glm::dvec3(
-                mesh.positions[atlas.vertices[atlas.indices[3 * t + std::size_t(k)]].source]);
-    };
-    const glm::dvec3 a = corner(0), e1 = corner(1) - a, e2 = corner(2) - a, r = p - a;
-    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-    const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2), det = d11 * d22 - d12 * d12;
-    const double w1 = (d22 * r1 - d12 * r2) / det, w2 = (d11 * r2 - d12 * r1) / det;
-    const glm::dvec2 uv = (1.0 - w1 - w2) * texelPosition(atlas, t, 0) +
-            w1 * texelPosition(atlas, t, 1) + w2 * texelPosition(atlas, t, 2);
-    return glm::ivec2(glm::floor(uv));
 }
 
 // Does the texel square [x, x+1] x [y, y+1] meet the triangle? (separating axes: the two
@@ -129,8 +46,6 @@ bool touches(const glm::dvec2 p[3], int x, int y) {
     }
     return true;
 }
-
-class AtlasGpuTest : public GpuTest {};
 
 // Every texel whose centre lies on a triangle holds that triangle's world position at the
 // centre (within half a texel of the CPU's parameterisation; in practice float rounding),
@@ -197,129 +112,6 @@ TEST_F(AtlasGpuTest, TexelsRoundTripToWorldPositions) {
     EXPECT_EQ(unlit, 0) << "texels next to a surface that bilinear lookups would read as black";
 }
 
-// An emitting square (radiance L, black) 0.5 m above the centre of an equal floor square:
-// E = L * integral cos cos / r^2 dA = 4 L (1/sqrt 2) atan(1/sqrt 2) = 1.7408 L (the
-// point-to-rectangle form factor, e.g. Howell's catalogue, C-11, times pi). No lights.
-scene::Scene emitterOverFloor(bool occluder) {
-    scene::Scene scene;
-    scene::Material grey, emitter, black;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    emitter.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    emitter.emissiveFactor = glm::vec3(2.0f, 1.0f, 0.5f);
-    black.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    black.doubleSided = true;
-    scene.materials = {grey, emitter, black};
-    addPrimitive(scene, horizontalSquare(0.5f, 0.0f));
-    scene::Primitive top = horizontalSquare(0.5f, 0.5f);
-    top.indices = {0, 1, 2, 0, 2, 3}; // facing -Y
-    top.normals.assign(4, glm::vec3(0.0f, -1.0f, 0.0f));
-    top.material = 1;
-    addPrimitive(scene, top);
-    if (occluder) {
-        scene::Primitive plate = horizontalSquare(0.45f, 0.25f);
-        plate.material = 2;
-        addPrimitive(scene, plate);
-    }
-    scene.cameras.push_back(lookAtCamera({0.0f, 0.25f, 0.4f}, {0.0f, 0.25f, 0.0f}, 50.0f));
-    return scene;
-}
-
-constexpr double kEmitterFormFactor = 1.7408437; // 4 / sqrt(2) * atan(1 / sqrt(2))
-
-// Mean E_ind over the 3x3 texels around the floor's centre (E is flat there: 0.2% over 1 cm).
-glm::dvec3 floorCentreIrradiance(const atlas::Atlas& atlas, const atlas::AtlasMesh& mesh,
-        const std::vector<glm::vec4>& lit) {
-    const int r = atlas.resolution;
-    const glm::ivec2 centre = texelOf(mesh, atlas, 0, glm::dvec3(0.0));
-    glm::dvec3 sum(0.0);
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            sum += glm::dvec3(
-                    lit[std::size_t(centre.y + dy) * std::size_t(r) + std::size_t(centre.x + dx)]);
-        }
-    return sum / 9.0;
-}
-
-TEST_F(AtlasGpuTest, AreaEstimatorMatchesAnalyticEmitter) {
-    const scene::Scene scene = emitterOverFloor(false);
-    Settings settings = atlasSettings(256, 1024);
-    settings.atlas.progressive = false;
-    settings.atlas.rotate = false;
-    AtlasFrame frame(scene, settings);
-    frame.render({32, 32});
-    const glm::dvec3 e =
-            floorCentreIrradiance(frame.gi().atlas(), atlas::flattenScene(scene), frame.lit());
-    const glm::dvec3 expected = kEmitterFormFactor * glm::dvec3(2.0, 1.0, 0.5);
-    // ~500 of the 1024 Hammersley points land on the emitter and the integrand is smooth:
-    // the quasi-Monte Carlo error is well under 1%; 2% also absorbs half-float storage.
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(e[c], expected[c], 0.02 * expected[c])
-                << "Probe at floor centre, channel " << c << ": expected " << expected[c]
-                << " observed " << e[c];
-    }
-}
-
-// The same emitter behind an opaque plate: with atlas.visibility=voxel the floor centre sees
-// none of it through the occupancy of a voxel cascade; without visibility the plate changes
-// nothing (the thesis ignores occlusion).
-TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
-    const scene::Scene scene = emitterOverFloor(true);
-    const atlas::AtlasMesh mesh = atlas::flattenScene(scene);
-    Settings settings = atlasSettings(256, 256);
-    settings.atlas.progressive = false;
-    settings.voxel.resolution = 64;
-    settings.voxel.levels = 1;
-    settings.voxel.extent = 3.2f;
-    const glm::ivec2 size(32, 32);
-    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
-
-    gl::ShaderLibrary shaders;
-    scene::GpuScene gpuScene(scene);
-    render::ShadowPass shadows;
-    std::string error;
-    ASSERT_TRUE(shadows.init(shaders, error)) << error;
-    shadows.setLights(scene.lights, scene.bounds, settings.shadow);
-    shader::FrameUniforms uniforms{};
-    uniforms.viewProjection = camera.viewProjection();
-    uniforms.inverseViewProjection = glm::inverse(uniforms.viewProjection);
-    uniforms.view = camera.view;
-    uniforms.cameraPosition = glm::vec4(camera.eye, 1.0f);
-    uniforms.screen = glm::vec4(glm::vec2(size), 0.0f, 0.0f);
-    uniforms.counts = glm::ivec4(0, OUTPUT_FINAL, 0, 0);
-    const gl::Buffer frameUniforms = gl::createBuffer(sizeof uniforms, &uniforms, 0, "test/frame");
-    gl::GpuProfiler profiler;
-    shadows.execute(gpuScene, profiler);
-
-    voxel::VoxelizationManager voxels;
-    ASSERT_TRUE(voxels.init(shaders, scene, error)) << error;
-    ASSERT_TRUE(voxels.configure(settings, error)) << error;
-    const GiFrameInputs voxelInputs{gpuScene, scene.lights, shadows, frameUniforms, camera, size};
-    voxels.update(voxelInputs, profiler);
-    const OccupancyVolume occupancy{voxels.textures().albedo, voxels.textures().normal, voxels.uniforms()};
-
-    for (const int visibility : {ATLAS_VISIBILITY_NONE, ATLAS_VISIBILITY_VOXEL}) {
-        settings.atlas.visibility = visibility;
-        atlas::AtlasGi gi;
-        ASSERT_TRUE(gi.init(shaders, scene, error)) << error;
-        ASSERT_TRUE(gi.configure(settings, error)) << error;
-        GiFrameInputs inputs{gpuScene, scene.lights, shadows, frameUniforms, camera, size};
-        inputs.occupancy = &occupancy;
-        gi.update(inputs, profiler);
-        const glm::dvec3 e = floorCentreIrradiance(gi.atlas(), mesh,
-                                     readAtlas(gi.textures().lit, gi.textures().resolution)) /
-                             double(gpuScene.exposure());
-        const double expected = kEmitterFormFactor * 2.0;
-        if (visibility == ATLAS_VISIBILITY_NONE) {
-            // 256 points, about a third on the emitter: 3%.
-            EXPECT_NEAR(e.r, expected, 0.03 * expected)
-                    << "without visibility the plate is ignored";
-        } else {
-            EXPECT_LT(e.r, 0.02 * expected) << "the plate hides the emitter from the floor centre";
-        }
-    }
-    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-}
-
 // The thesis' goal (3.1, 5.1): the atlas holds the whole scene, so the indirect light of a
 // surface point is the same whether or not the red wall is in view. The lit atlas is computed
 // without the camera: bit-identical between the two views. The pixel showing one floor point
@@ -377,119 +169,6 @@ TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     EXPECT_GT(red.r / red.g, 1.03f * green.r / green.g)
             << "near red " << red.r << "," << red.g << " near green " << green.r << ","
             << green.g;
-}
-
-// Mean E_ind over the Cornell floor's texels after `frames` frames of `samples` each.
-glm::dvec3 floorMean(const scene::Scene& scene, int samples, int frames) {
-    Settings settings = atlasSettings(256, samples);
-    settings.atlas.progressive = frames > 1;
-    settings.atlas.rotate = frames > 1;
-    settings.atlas.targetSamples = samples * frames;
-    AtlasFrame frame(scene, settings);
-    frame.render({16, 16}, render::OutputComponent::Final, frames);
-    EXPECT_EQ(frame.gi().accumulatedSamples(), samples * frames);
-    const atlas::Atlas& atlas = frame.gi().atlas();
-    const auto lit = frame.lit();
-    glm::dvec3 sum(0.0);
-    int count = 0;
-    for (std::size_t t = 0; t < 2; ++t) { // the floor: triangles 0 and 1
-        atlas::forEachTexelCentre(texelPosition(atlas, t, 0), texelPosition(atlas, t, 1),
-                texelPosition(atlas, t, 2), [&](int x, int y) {
-                    sum += glm::dvec3(
-                            lit[std::size_t(y) * std::size_t(atlas.resolution) + std::size_t(x)]);
-                    ++count;
-                });
-    }
-    EXPECT_GT(count, 1000);
-    const glm::dvec3 mean = sum / double(std::max(count, 1));
-    std::printf("floor mean E_ind, %d x %d samples: %.5f %.5f %.5f W/m^2\n", frames, samples,
-            mean.r, mean.g, mean.b);
-    return mean;
-}
-
-// The area estimator converges: the mean E_ind over the Cornell floor moves little as the
-// sample count grows 16 -> 64 -> 256, and 256 agrees with 4096 (16 rotated sets of 256), with
-// the light where the scene has it, 1 cm under the ceiling, and moved to the middle of the
-// box. Under the ceiling about 80% of the light the ceiling reflects comes from a spot of
-// 5 cm radius above the lamp (0.3% of the atlas): points spread uniformly over the atlas hit
-// or missed it by chance and the floor mean swung by a factor of two between counts (0.34,
-// 0.82, 0.51, 0.87 at 16, 64, 256, 1024 and 2.5 W/m^2 at 4096); senders drawn by the power
-// they send sample it as often as it matters. Measured on llvmpipe (red): 1.287, 1.281,
-// 1.277, 1.279 W/m^2 under the ceiling, 0.874, 0.866, 0.869, 0.867 W/m^2 mid-box.
-TEST_F(AtlasGpuTest, FloorMeanIsStableAsSamplesGrow) {
-    for (const bool midBox : {false, true}) {
-        scene::Scene scene = loadCornellBox();
-        if (midBox) scene.lights[0].position = glm::vec3(0.278f, 0.42f, -0.15f);
-        const glm::dvec3 m16 = floorMean(scene, 16, 1), m64 = floorMean(scene, 64, 1),
-                         m256 = floorMean(scene, 256, 1), m4096 = floorMean(scene, 256, 16);
-        for (int c = 0; c < 3; ++c) {
-            // Monte Carlo error of the mean over ~5000 floor texels, each with its own
-            // senders: the largest differences measured on llvmpipe are 2%, 0.4% and 0.2%;
-            // the bounds are about twice those.
-            EXPECT_NEAR(m16[c], m256[c], 0.04 * m256[c])
-                    << "16 vs 256, channel " << c << (midBox ? ", light mid-box" : "");
-            EXPECT_NEAR(m64[c], m256[c], 0.01 * m256[c])
-                    << "64 vs 256, channel " << c << (midBox ? ", light mid-box" : "");
-            EXPECT_NEAR(m256[c], m4096[c], 0.005 * m4096[c])
-                    << "256 vs 4096, channel " << c << (midBox ? ", light mid-box" : "");
-        }
-    }
-}
-
-// Progressive mode adds one rotated set per frame until the target, then stops; new lights
-// start over.
-TEST_F(AtlasGpuTest, ProgressiveAccumulationStopsAtTargetAndRestarts) {
-    scene::Scene scene = loadCornellBox();
-    Settings settings = atlasSettings(64, 64);
-    settings.atlas.targetSamples = 200;
-    AtlasFrame frame(scene, settings);
-    std::vector<int> counts;
-    for (int i = 0; i < 5; ++i) {
-        frame.render({16, 16});
-        counts.push_back(frame.gi().accumulatedSamples());
-    }
-    EXPECT_EQ(counts, (std::vector<int>{64, 128, 192, 256, 256}));
-    std::vector<scene::Light> lights = scene.lights;
-    lights[0].intensity *= 2.0f;
-    frame.renderer().setLights(lights);
-    frame.render({16, 16});
-    EXPECT_EQ(frame.gi().accumulatedSamples(), 64) << "a changed light restarts the accumulation";
-    Settings merz = settings;
-    merz.atlas.estimator = ATLAS_ESTIMATOR_MERZ2010;
-    std::string error;
-    ASSERT_TRUE(frame.renderer().setSettings(merz, error)) << error;
-    frame.render({16, 16});
-    EXPECT_EQ(frame.gi().accumulatedSamples(), 64) << "changed settings restart the accumulation";
-}
-
-// Extremes of the settings: every run ends with finite values.
-TEST_F(AtlasGpuTest, ExtremeSettingsStayFinite) {
-    const scene::Scene scene = loadCornellBox();
-    struct Case {
-        int resolution, samples, estimator, gutter;
-    };
-    for (const Case c :
-            {Case{16, 1, ATLAS_ESTIMATOR_AREA, 2}, Case{64, 4096, ATLAS_ESTIMATOR_MERZ2010, 2},
-                    Case{128, 7, ATLAS_ESTIMATOR_AREA, 16}}) {
-        Settings settings = atlasSettings(c.resolution, c.samples);
-        settings.atlas.estimator = c.estimator;
-        settings.atlas.gutter = c.gutter;
-        AtlasFrame frame(scene, settings);
-        frame.render({24, 24}, render::OutputComponent::Final, 2);
-        EXPECT_TRUE(core::allFinite(frame.image())) << "resolution " << c.resolution;
-        for (const glm::vec4& t : frame.lit()) {
-            ASSERT_TRUE(std::isfinite(t.r) && std::isfinite(t.g) && std::isfinite(t.b))
-                    << "resolution " << c.resolution;
-            ASSERT_GE(t.r, 0.0f);
-        }
-        for (const render::OutputComponent view : {render::OutputComponent::AtlasDirect,
-                     render::OutputComponent::AtlasNormal, render::OutputComponent::AtlasPosition,
-                     render::OutputComponent::AtlasAlbedo, render::OutputComponent::AtlasIndirect,
-                     render::OutputComponent::AtlasCharts}) {
-            frame.render({24, 24}, view);
-            EXPECT_TRUE(core::allFinite(frame.image())) << render::outputComponentName(view);
-        }
-    }
 }
 
 TEST_F(AtlasGpuTest, MemoryReportMatchesTheLayers) {

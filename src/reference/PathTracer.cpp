@@ -1,0 +1,274 @@
+#include "reference/PathTracer.h"
+
+#include "reference/LightSampling.h"
+#include "reference/SamplingMath.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gi::reference {
+namespace {
+
+// A shadow ray towards a point or spot light stops this fraction short of the light, so a
+// light placed exactly on a surface is not shadowed by it.
+constexpr float kShadowRayShortening = 1e-4f;
+
+} // namespace
+
+PathTracer::PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
+        const scene::CameraView& camera, int width, int height, int bounces)
+    : mState(state), mLights(lights), mWidth(width), mHeight(height), mBounces(bounces) {
+    const glm::dmat4 clipToWorld =
+            glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
+    mNear[0] = clipToWorld * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+    mFar[0] = clipToWorld * glm::dvec4(0.0, 0.0, 1.0, 1.0);
+    for (int axis = 0; axis < 2; ++axis) {
+        glm::dvec4 unit(0.0);
+        unit[axis] = 1.0;
+        mNear[axis + 1] = mFar[axis + 1] = clipToWorld * unit;
+    }
+    for (const scene::Light& light : lights) mEmissionPdf.push_back(emissionPdf(light));
+}
+
+// One path through continuous image coordinates (x, y), x in [0, width) left to right,
+// y in [0, height) top to bottom. u[0..1]: the first bounce direction, u[2..3]: the first
+// light's emission direction; everything else comes from `rng`. `lightVertices` is scratch
+// space reused between calls.
+PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
+        std::vector<LightVertex>& lightVertices, RayCounts& counts) const {
+    PathSample result;
+    RTCIntersectContext coherent, incoherent;
+    rtcInitIntersectContext(&coherent);
+    coherent.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcInitIntersectContext(&incoherent);
+    RTCRayHit rayHit = cameraRay(x, y);
+    ++counts.primary;
+    rtcIntersect1(mState.rtcScene, &coherent, &rayHit);
+    Surface surface;
+    if (!interact(rayHit, surface)) return result;
+    result.hit = true;
+    result.direct = surface.emission + directLight(surface, -1.0f, incoherent, counts);
+    if (mBounces <= 0) return result;
+
+    sampleLightVertices(u + 2, rng, lightVertices, incoherent, counts);
+    glm::vec3 throughput(1.0f);
+    for (int bounce = 0; bounce < mBounces; ++bounce) {
+        if (maxComponent(throughput * surface.albedo) <= 0.0f) break;
+        result.indirect += throughput * connect(surface, lightVertices, incoherent, counts);
+        throughput *= surface.albedo;
+        const float u1 = bounce == 0 ? u[0] : rng.nextFloat();
+        const float u2 = bounce == 0 ? u[1] : rng.nextFloat();
+        const glm::vec3 direction = sampleCosineHemisphere(surface.shadingNormal, u1, u2);
+        const float cosSampled = glm::dot(direction, surface.shadingNormal);
+        if (glm::dot(direction, surface.geometricNormal) <= 0.0f || cosSampled <= 0.0f) break;
+        const glm::vec3 origin = offsetOrigin(surface);
+        rayHit = ray(origin, direction, std::numeric_limits<float>::infinity());
+        ++counts.bounce;
+        rtcIntersect1(mState.rtcScene, &incoherent, &rayHit);
+        if (!interact(rayHit, surface)) break;
+        const glm::vec3 step = surface.position - origin;
+        const float distance2 = glm::dot(step, step);
+        const float pdfArea = cosSampled * glm::one_over_pi<float>() *
+                std::abs(glm::dot(surface.geometricNormal, direction)) /
+                std::max(distance2, std::numeric_limits<float>::min());
+        result.indirect += throughput *
+                (surface.emission + directLight(surface, pdfArea, incoherent, counts));
+    }
+    return result;
+}
+
+RTCRayHit PathTracer::ray(const glm::vec3& origin, const glm::vec3& direction, float tfar) {
+    RTCRayHit rayHit{};
+    rayHit.ray.org_x = origin.x;
+    rayHit.ray.org_y = origin.y;
+    rayHit.ray.org_z = origin.z;
+    rayHit.ray.dir_x = direction.x;
+    rayHit.ray.dir_y = direction.y;
+    rayHit.ray.dir_z = direction.z;
+    rayHit.ray.tnear = 0.0f;
+    rayHit.ray.tfar = tfar;
+    rayHit.ray.mask = 0xFFFFFFFFu;
+    rayHit.ray.time = 0.0f;
+    rayHit.ray.flags = 0;
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rayHit;
+}
+
+// The ray through a point of the image, from the near plane to the far plane, exactly as
+// the raster passes clip it.
+RTCRayHit PathTracer::cameraRay(float x, float y) const {
+    const double ndcX = 2.0 * double(x) / double(mWidth) - 1.0;
+    const double ndcY = 1.0 - 2.0 * double(y) / double(mHeight);
+    const glm::dvec4 nearH = mNear[0] + ndcX * mNear[1] + ndcY * mNear[2];
+    const glm::dvec4 farH = mFar[0] + ndcX * mFar[1] + ndcY * mFar[2];
+    const glm::dvec3 nearP = glm::dvec3(nearH) / nearH.w;
+    const glm::dvec3 farP = glm::dvec3(farH) / farH.w;
+    const glm::dvec3 span = farP - nearP;
+    const double length = glm::length(span);
+    return ray(glm::vec3(nearP), glm::vec3(span / length), float(length));
+}
+
+glm::vec3 PathTracer::offsetOrigin(const Surface& surface) {
+    return surface.position + surface.offset * surface.geometricNormal;
+}
+
+bool PathTracer::interact(const RTCRayHit& rayHit, Surface& surface) const {
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    const std::uint32_t triangle = mState.firstTriangle[rayHit.hit.geomID] + rayHit.hit.primID;
+    const glm::uvec3 t = mState.triangles[triangle];
+    const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
+    const glm::vec3& p0 = mState.positions[t.x];
+    const glm::vec3& p1 = mState.positions[t.y];
+    const glm::vec3& p2 = mState.positions[t.z];
+    const glm::vec3 incoming(-rayHit.ray.dir_x, -rayHit.ray.dir_y, -rayHit.ray.dir_z);
+    const TriangleInfo& info = mState.triangleInfo[triangle];
+
+    surface.position = w * p0 + u * p1 + v * p2;
+    glm::vec3 ng = info.normal == glm::vec3(0.0f) ? incoming : info.normal;
+    if (glm::dot(ng, incoming) < 0.0f) ng = -ng;
+    glm::vec3 ns = ng;
+    if (info.flags & kSmoothNormals) {
+        ns = w * mState.normals[t.x] + u * mState.normals[t.y] + v * mState.normals[t.z];
+        const float nsLength = glm::length(ns);
+        ns = nsLength > 0.0f && std::isfinite(nsLength) ? ns / nsLength : ng;
+        if (glm::dot(ns, incoming) < 0.0f) ns = -ns;
+    }
+    surface.geometricNormal = ng;
+    surface.shadingNormal = ns;
+    surface.offset = info.offset;
+
+    const ShadingMaterial& m = mState.materials[info.material];
+    surface.albedo = glm::vec3(mState.baseColor(triangle, u, v));
+    surface.emission = m.emissiveFactor;
+    if (m.emissiveTexture && maxComponent(m.emissiveFactor) > 0.0f) {
+        surface.emission *= glm::vec3(sampleTexture(*m.emissiveTexture,
+                mState.texcoord(triangle, m.emissiveTexCoord, u, v)));
+    }
+    return true;
+}
+
+bool PathTracer::occluded(const glm::vec3& origin, const glm::vec3& direction, float tfar,
+        RTCIntersectContext& context, RayCounts& counts) const {
+    RTCRay shadow = ray(origin, direction, tfar).ray;
+    ++counts.shadow;
+    rtcOccluded1(mState.rtcScene, &context, &shadow);
+    return shadow.tfar < 0.0f;
+}
+
+// Outgoing radiance rho/pi x sum over lights of (colour x intensity x E) x visibility, with
+// E per DESIGN.md "Radiometric conventions". With pdfArea >= 0 (the density of this vertex
+// under cosine sampling from the previous one), contributions of lights that also have
+// light vertices carry the MIS weight pA / (pA + pB); with pdfArea < 0 (camera hit) none.
+glm::vec3 PathTracer::directLight(const Surface& surface, float pdfArea,
+        RTCIntersectContext& context, RayCounts& counts) const {
+    if (maxComponent(surface.albedo) <= 0.0f) return glm::vec3(0.0f);
+    glm::vec3 sum(0.0f);
+    const glm::vec3 origin = offsetOrigin(surface);
+    for (std::size_t i = 0; i < mLights.size(); ++i) {
+        const scene::Light& light = mLights[i];
+        const glm::vec3 radiant = light.color * light.intensity;
+        if (!usableLight(light, radiant)) continue;
+        glm::vec3 wi;
+        float distance = 0.0f, factor = 0.0f;
+        if (!lightGeometry(light, surface.position, wi, distance, factor)) continue;
+        const float cosTheta = glm::dot(surface.shadingNormal, wi);
+        const float cosGeometric = glm::dot(surface.geometricNormal, wi);
+        if (cosTheta <= 0.0f || cosGeometric <= 0.0f) continue;
+        float tfar = distance;
+        if (std::isfinite(distance)) {
+            tfar = glm::length(light.position - origin) * (1.0f - kShadowRayShortening);
+        }
+        if (occluded(origin, wi, tfar, context, counts)) continue;
+        float weight = 1.0f;
+        if (pdfArea >= 0.0f && mEmissionPdf[i] > 0.0f) {
+            const float pdfLight = mEmissionPdf[i] * cosGeometric / (distance * distance);
+            weight = pdfArea / (pdfArea + pdfLight);
+        }
+        sum += radiant * (factor * cosTheta * weight);
+    }
+    return surface.albedo * glm::one_over_pi<float>() * sum;
+}
+
+// Samples one light vertex per point or spot light (the first light uses the stratified
+// numbers u[0..1], the others `rng`).
+void PathTracer::sampleLightVertices(const float u[2], Pcg32& rng,
+        std::vector<LightVertex>& vertices, RTCIntersectContext& context,
+        RayCounts& counts) const {
+    vertices.resize(mLights.size());
+    for (std::size_t i = 0; i < mLights.size(); ++i) {
+        LightVertex& vertex = vertices[i];
+        vertex.valid = false;
+        const scene::Light& light = mLights[i];
+        if (mEmissionPdf[i] <= 0.0f) continue;
+        const float u1 = i == 0 ? u[0] : rng.nextFloat();
+        const float u2 = i == 0 ? u[1] : rng.nextFloat();
+        const glm::vec3 radiant = light.color * light.intensity;
+        if (!usableLight(light, radiant)) continue;
+        const glm::vec3 direction = lightSubpathDirection(light, u1, u2);
+        RTCRayHit rayHit =
+                ray(light.position, direction, std::numeric_limits<float>::infinity());
+        ++counts.light;
+        rtcIntersect1(mState.rtcScene, &context, &rayHit);
+        if (!interact(rayHit, vertex.surface)) continue;
+        const Surface& s = vertex.surface;
+        glm::vec3 wi;
+        float distance = 0.0f, factor = 0.0f;
+        if (maxComponent(s.albedo) <= 0.0f ||
+                !lightGeometry(light, s.position, wi, distance, factor)) {
+            continue;
+        }
+        const float cosTheta = glm::dot(s.shadingNormal, wi);
+        if (cosTheta <= 0.0f) continue;
+        vertex.radiance = s.albedo * glm::one_over_pi<float>() * radiant * (factor * cosTheta);
+        vertex.pdfArea = mEmissionPdf[i] * std::abs(glm::dot(s.geometricNormal, wi)) /
+                         (distance * distance);
+        vertex.valid = vertex.pdfArea > 0.0f && std::isfinite(vertex.pdfArea);
+    }
+}
+
+// Strategy (B): light reflected once at each light vertex y towards x, i.e.
+// rho_x/pi cos_s(x) |cos_g(y)| / d^2 x L_y x V(x, y) / (pA + pB).
+glm::vec3 PathTracer::connect(const Surface& x, const std::vector<LightVertex>& vertices,
+        RTCIntersectContext& context, RayCounts& counts) const {
+    glm::vec3 sum(0.0f);
+    for (const LightVertex& vertex : vertices) {
+        if (!vertex.valid) continue;
+        const Surface& y = vertex.surface;
+        const glm::vec3 toY = y.position - x.position;
+        const float distance2 = glm::dot(toY, toY);
+        if (!(distance2 > 0.0f)) continue;
+        const glm::vec3 w = toY / std::sqrt(distance2);
+        const float cosX = glm::dot(x.shadingNormal, w);
+        const float cosY = -glm::dot(y.geometricNormal, w);
+        if (cosX <= 0.0f || glm::dot(x.geometricNormal, w) <= 0.0f || cosY <= 0.0f) continue;
+        const float geometry = cosX * cosY / distance2;
+        const float pdfBsdf = geometry * glm::one_over_pi<float>();
+        if (!visible(x, y, context, counts)) continue;
+        sum += vertex.radiance * (geometry / (pdfBsdf + vertex.pdfArea));
+    }
+    return x.albedo * glm::one_over_pi<float>() * sum;
+}
+
+// Whether the segment from x to y is free. A ray arriving at y at a grazing angle may touch
+// y's own plane a little before y by rounding; hits within that plane count as arriving.
+bool PathTracer::visible(const Surface& x, const Surface& y, RTCIntersectContext& context,
+        RayCounts& counts) const {
+    const glm::vec3 origin = offsetOrigin(x);
+    const glm::vec3 span = y.position - origin;
+    const float length = glm::length(span);
+    if (!(length > 0.0f)) return false;
+    const glm::vec3 direction = span / length;
+    RTCRayHit rayHit = ray(origin, direction, length * (1.0f - kShadowRayShortening));
+    ++counts.shadow;
+    rtcIntersect1(mState.rtcScene, &context, &rayHit);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return true;
+    const glm::vec3 hit = origin + rayHit.ray.tfar * direction;
+    return std::abs(glm::dot(hit - y.position, y.geometricNormal)) <= 4.0f * y.offset;
+}
+
+} // namespace gi::reference
