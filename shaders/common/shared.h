@@ -112,6 +112,15 @@
 #define LOC_SHADOW_LIGHT_POSITION   2   // vec4, xyz = point light position, w = far distance
                                         // (0 for spot/directional: hardware depth is used)
 #define LOC_PRESENT_SCALE           3   // float, radiance multiplier undoing the pre-exposure
+#define LOC_VOXEL_LEVEL             5   // int, cascade level (propagation, debug view) or
+                                        // pyramid mip being written by this dispatch
+#define LOC_VOXEL_DEBUG_VIEW        6   // int, 0 albedo, 1 irradiance, 2 normal
+#define LOC_INJECT_VIEW_PROJECTION  7   // mat4, world -> clip of the light view being injected
+#define LOC_INJECT_AXIS             8   // vec4, xyz = unit forward axis of the light view,
+                                        // w = 1 for an orthographic view
+#define LOC_INJECT_FOOTPRINT        9   // float, one pixel of the light view: sr on the axis
+                                        // (perspective) or m^2 (orthographic)
+#define LOC_INJECT_LIGHT            10  // int, index into GpuLight[] of the injected light
 
 #define LIGHT_POINT                 0
 #define LIGHT_SPOT                  1
@@ -166,27 +175,19 @@ struct GpuMaterial {                    // std430
 struct VoxelUniforms {                  // std140
     vec4 levelOrigin[VOXEL_MAX_LEVELS]; // xyz = world-space min corner of level k (m),
                                         // w = voxel edge length of level k (m)
-    ivec4 grid;                         // x = resolution v, y = level count l,
-                                        // z = level being written/read (pass-specific), w = 0
+    ivec4 grid;                         // x = resolution v, y = level count l, zw = 0
     vec4 trace;                         // x = cone half-angle tan, y = max distance (m),
                                         // z = step factor (x cone diameter), w = 1 to apply
                                         // the thesis' 1/(1+d^2) falloff
     vec4 traceWeights;                  // x = weight of the central cone, y = weight of each
                                         // ring cone, z = cos of ring angle, w = sin of it
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
-                                        // fragment is discarded, y = 1 for an orthographic
-                                        // light view, z = the view's pixel footprint (sr on
-                                        // the axis for perspective views, m^2 for
-                                        // orthographic ones), w = debug view (0 albedo,
-                                        // 1 irradiance, 2 normal)
-    vec4 injectionAxis;                 // xyz = unit forward axis of the light view
+                                        // fragment is discarded, yzw = unused
     vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
                                         // pixel area (m^2), z = 1 for max-axis coverage in
                                         // propagation, w = unused
     vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
                                         // y = 1 to jitter the cone ring per pixel, zw = unused
-    mat4 viewProjection;                // injection: world -> clip of the current light view
-    vec4 lightIndex;                    // injection: x = index into GpuLight[], yzw = unused
 };
 
 struct GpuShadow {                      // std430, one per light
