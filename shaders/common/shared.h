@@ -112,6 +112,8 @@
 #define LOC_SHADOW_LIGHT_POSITION   2   // vec4, xyz = point light position, w = far distance
                                         // (0 for spot/directional: hardware depth is used)
 #define LOC_PRESENT_SCALE           3   // float, radiance multiplier undoing the pre-exposure
+#define LOC_FORWARD_INDIRECT_SIZE   4   // vec2, texels of the indirect texture at
+                                        // BIND_TEX_INDIRECT; (0, 0) = no indirect light
 #define LOC_VOXEL_LEVEL             5   // int, cascade level (propagation, debug view) or
                                         // pyramid mip being written by this dispatch
 #define LOC_VOXEL_DEBUG_VIEW        6   // int, 0 albedo, 1 irradiance, 2 normal
@@ -149,11 +151,10 @@ struct FrameUniforms {                  // std140
     vec4 shading;                       // x = specular strength ks, y = Blinn-Phong exponent,
                                         // z = 1 to include specular, w = 1 to apply shadows
     mat4 inverseViewProjection;         // clip -> world, for per-pixel rays
-    vec4 screen;                        // xy = output size (pixels), zw = size of the
-                                        // indirect texture (pixels)
+    vec4 screen;                        // xy = output size (pixels), zw = unused
     ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
-                                        // write, z = 1 if an indirect texture is bound,
-                                        // w = 1 for depth-aware upsampling of it
+                                        // write, z = unused, w = 1 for depth-aware
+                                        // upsampling of the indirect texture
 };
 
 struct GpuLight {                       // std430
