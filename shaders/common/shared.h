@@ -112,6 +112,17 @@
 #define LOC_SHADOW_LIGHT_POSITION   2   // vec4, xyz = point light position, w = far distance
                                         // (0 for spot/directional: hardware depth is used)
 #define LOC_PRESENT_SCALE           3   // float, radiance multiplier undoing the pre-exposure
+#define LOC_FORWARD_INDIRECT_SIZE   4   // vec2, texels of the indirect texture at
+                                        // BIND_TEX_INDIRECT; (0, 0) = no indirect light
+#define LOC_VOXEL_LEVEL             5   // int, cascade level (propagation, debug view) or
+                                        // pyramid mip being written by this dispatch
+#define LOC_VOXEL_DEBUG_VIEW        6   // int, 0 albedo, 1 irradiance, 2 normal
+#define LOC_INJECT_VIEW_PROJECTION  7   // mat4, world -> clip of the light view being injected
+#define LOC_INJECT_AXIS             8   // vec4, xyz = unit forward axis of the light view,
+                                        // w = 1 for an orthographic view
+#define LOC_INJECT_FOOTPRINT        9   // float, one pixel of the light view: sr on the axis
+                                        // (perspective) or m^2 (orthographic)
+#define LOC_INJECT_LIGHT            10  // int, index into GpuLight[] of the injected light
 
 #define LIGHT_POINT                 0
 #define LIGHT_SPOT                  1
@@ -140,11 +151,10 @@ struct FrameUniforms {                  // std140
     vec4 shading;                       // x = specular strength ks, y = Blinn-Phong exponent,
                                         // z = 1 to include specular, w = 1 to apply shadows
     mat4 inverseViewProjection;         // clip -> world, for per-pixel rays
-    vec4 screen;                        // xy = output size (pixels), zw = size of the
-                                        // indirect texture (pixels)
+    vec4 screen;                        // xy = output size (pixels), zw = unused
     ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
-                                        // write, z = 1 if an indirect texture is bound,
-                                        // w = 1 for depth-aware upsampling of it
+                                        // write, z = unused, w = 1 for depth-aware
+                                        // upsampling of the indirect texture
 };
 
 struct GpuLight {                       // std430
@@ -166,27 +176,19 @@ struct GpuMaterial {                    // std430
 struct VoxelUniforms {                  // std140
     vec4 levelOrigin[VOXEL_MAX_LEVELS]; // xyz = world-space min corner of level k (m),
                                         // w = voxel edge length of level k (m)
-    ivec4 grid;                         // x = resolution v, y = level count l,
-                                        // z = level being written/read (pass-specific), w = 0
+    ivec4 grid;                         // x = resolution v, y = level count l, zw = 0
     vec4 trace;                         // x = cone half-angle tan, y = max distance (m),
                                         // z = step factor (x cone diameter), w = 1 to apply
                                         // the thesis' 1/(1+d^2) falloff
     vec4 traceWeights;                  // x = weight of the central cone, y = weight of each
                                         // ring cone, z = cos of ring angle, w = sin of it
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
-                                        // fragment is discarded, y = 1 for an orthographic
-                                        // light view, z = the view's pixel footprint (sr on
-                                        // the axis for perspective views, m^2 for
-                                        // orthographic ones), w = debug view (0 albedo,
-                                        // 1 irradiance, 2 normal)
-    vec4 injectionAxis;                 // xyz = unit forward axis of the light view
+                                        // fragment is discarded, yzw = unused
     vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
                                         // pixel area (m^2), z = 1 for max-axis coverage in
                                         // propagation, w = unused
     vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
                                         // y = 1 to jitter the cone ring per pixel, zw = unused
-    mat4 viewProjection;                // injection: world -> clip of the current light view
-    vec4 lightIndex;                    // injection: x = index into GpuLight[], yzw = unused
 };
 
 struct GpuShadow {                      // std430, one per light

@@ -9,6 +9,7 @@
 #include "../common/shadows.glsl"
 
 layout(binding = BIND_TEX_INDIRECT) uniform sampler2D indirectTexture;
+layout(location = LOC_FORWARD_INDIRECT_SIZE) uniform vec2 indirectSize;   // (0, 0): none
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -21,10 +22,10 @@ layout(location = 0) out vec4 outRadiance;
 vec3 indirectIrradiance(float viewDepth) {
     vec2 uv = gl_FragCoord.xy / frame.screen.xy;
     if (frame.counts.w == 0) return texture(indirectTexture, uv).rgb;
-    vec2 p = uv * frame.screen.zw - 0.5;
+    vec2 p = uv * indirectSize - 0.5;
     vec2 f = fract(p);
     ivec2 base = ivec2(floor(p));
-    ivec2 maxTexel = ivec2(frame.screen.zw) - 1;
+    ivec2 maxTexel = ivec2(indirectSize) - 1;
     vec3 sum = vec3(0.0);
     float weightSum = 0.0;
     for (int i = 0; i < 4; ++i) {
@@ -66,7 +67,7 @@ void main() {
         }
     }
     vec3 indirect = vec3(0.0);
-    if (frame.counts.z != 0) {
+    if (indirectSize.x > 0.0) {
         float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
         indirect = baseColor.rgb / PI * indirectIrradiance(viewDepth);
     }

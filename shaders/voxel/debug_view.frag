@@ -13,10 +13,13 @@ layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelAlbedoTexture;
 layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTexture;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 
+layout(location = LOC_VOXEL_LEVEL) uniform int levelShown;
+layout(location = LOC_VOXEL_DEBUG_VIEW) uniform int viewShown;   // VIEW_*
+
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    int level = voxel.grid.z;
+    int level = levelShown;
     int v = voxelResolution();
     vec2 ndc = gl_FragCoord.xy / frame.screen.xy * 2.0 - 1.0;
     vec4 nearPoint = frame.inverseViewProjection * vec4(ndc, -1.0, 1.0);
@@ -38,9 +41,9 @@ void main() {
         vec4 albedo = texelFetch(voxelAlbedoTexture, texel, 0);
         if (albedo.a <= 0.0) continue;
         vec3 color = albedo.rgb / albedo.a;
-        if (voxel.injection.w == float(VIEW_IRRADIANCE)) {
+        if (viewShown == VIEW_IRRADIANCE) {
             color = texelFetch(voxelIrradianceTexture, texel, 0).rgb / max(albedo.a, 1e-4) / PI;
-        } else if (voxel.injection.w == float(VIEW_NORMAL)) {
+        } else if (viewShown == VIEW_NORMAL) {
             color = 0.5 + 0.5 * texelFetch(voxelNormalTexture, texel, 0).xyz;
         }
         outColor = vec4(color, 1.0);

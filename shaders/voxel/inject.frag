@@ -21,6 +21,10 @@ layout(early_fragment_tests) in;
 #include "../common/vertex_data.glsl"
 #include "voxel_lock.glsl"
 
+layout(location = LOC_INJECT_AXIS) uniform vec4 viewAxis;   // w = 1: orthographic
+layout(location = LOC_INJECT_FOOTPRINT) uniform float pixelFootprint;
+layout(location = LOC_INJECT_LIGHT) uniform int lightIndex;
+
 layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) coherent uniform image3D voxelHelper;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
@@ -28,7 +32,7 @@ in VertexData { VERTEX_DATA_MEMBERS } vin;
 void main() {
     GpuMaterial m = materials[drawMaterial];
     if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
-    GpuLight light = lights[int(voxel.lightIndex.x)];
+    GpuLight light = lights[lightIndex];
     vec3 n = normalize(vin.normal);
     // The side of the surface the light sees is the lit side, whatever the winding.
     vec3 toLight;
@@ -48,9 +52,9 @@ void main() {
         return;
     }
     float cosSurface = max(dot(n, toLight), 0.05);
-    float area = voxel.injection.z / cosSurface;
-    if (voxel.injection.y == 0.0) {
-        float cosAxis = max(dot(-toLight, voxel.injectionAxis.xyz), 0.0);
+    float area = pixelFootprint / cosSurface;
+    if (viewAxis.w == 0.0) {
+        float cosAxis = max(dot(-toLight, viewAxis.xyz), 0.0);
         area *= distance * distance * cosAxis * cosAxis * cosAxis;
     }
     float size = levelVoxelSize(level);

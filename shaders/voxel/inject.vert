@@ -8,7 +8,9 @@ out VertexData { VERTEX_DATA_MEMBERS } vout;
 // depths bit-identical so the LEQUAL early test keeps exactly the visible fragments.
 invariant gl_Position;
 
+layout(location = LOC_INJECT_VIEW_PROJECTION) uniform mat4 lightViewProjection;
+
 void main() {
     WRITE_VERTEX_DATA(vout)
-    gl_Position = voxel.viewProjection * vec4(inPosition, 1.0);
+    gl_Position = lightViewProjection * vec4(inPosition, 1.0);
 }

@@ -19,10 +19,11 @@ layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_s
 layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) uniform image3D voxelAlbedo;
 layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) uniform image3D voxelNormal;
 layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) uniform image3D voxelIrradiance;
+layout(location = LOC_VOXEL_LEVEL) uniform int levelWritten;   // >= 1
 
 void main() {
     int v = voxelResolution();
-    int level = voxel.grid.z;                   // the level being written, >= 1
+    int level = levelWritten;
     ivec3 coarse = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(coarse, ivec3(v / 2)))) return;
     ivec3 fineBase = coarse * 2 + ivec3(0, 0, (level - 1) * v);

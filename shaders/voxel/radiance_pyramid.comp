@@ -12,9 +12,10 @@ layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) readonly uniform image3D voxelA
 layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) readonly uniform image3D voxelIrradiance;
 layout(binding = BIND_IMG_VOXEL_PYRAMID_SOURCE, rgba16f) readonly uniform image3D pyramidSource;
 layout(binding = BIND_IMG_VOXEL_PYRAMID, rgba16f) writeonly uniform image3D pyramidTarget;
+layout(location = LOC_VOXEL_LEVEL) uniform int mipWritten;
 
 void main() {
-    int mip = voxel.grid.z;                     // the mip being written
+    int mip = mipWritten;
     ivec3 texel = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(texel, imageSize(pyramidTarget)))) return;
     int v = voxelResolution();

@@ -17,17 +17,11 @@ bool ForwardPass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
     gl::GpuScope scope(profiler, "render/forward");
-    glBindFramebuffer(GL_FRAMEBUFFER, out.target.id());
-    glViewport(0, 0, out.size.x, out.size.y);
+    out.target.bind();
+    out.target.clear();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    const float clearColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    const float clearDepth = 1.0f;
-    glClearNamedFramebufferfv(out.target.id(), GL_COLOR, 0, clearColor);
-    glClearNamedFramebufferfv(out.target.id(), GL_DEPTH, 0, &clearDepth);
 
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
@@ -41,6 +35,9 @@ void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
         glDepthMask(GL_FALSE);
     }
     glUseProgram(mProgram.id());
+    const glm::vec2 indirectSize = in.indirect ? glm::vec2(in.indirectSize) : glm::vec2(0.0f);
+    glProgramUniform2fv(mProgram.id(), LOC_FORWARD_INDIRECT_SIZE, 1, &indirectSize[0]);
+    glBindTextureUnit(BIND_TEX_INDIRECT, in.indirect ? in.indirect->id() : 0);
     in.shadows.bind();
     in.scene.drawAll(mProgram.id(), true);
     glDepthMask(GL_TRUE);

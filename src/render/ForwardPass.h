@@ -2,12 +2,14 @@
 // (DESIGN.md conventions), emission and the GI technique's indirect light, into a
 // linear-radiance target. An optional depth pre-pass (render.depth_prepass) lets each pixel
 // be shaded once however much geometry overlaps it.
-// Inputs : the GpuScene (vertices, materials, lights), shadow maps, the frame UBO.
+// Inputs : the GpuScene (vertices, materials, lights), shadow maps, the frame UBO, the GI
+//          technique's screen-space indirect irradiance (GiOutputs), if any.
 // Outputs: colour RGBA32F, linear radiance W/(m^2 sr), alpha = 1 on geometry, 0 elsewhere;
 //          depth DEPTH_COMPONENT32F.
 #pragma once
 
 #include "gl/GpuProfiler.h"
+#include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
 #include "render/ShadowPass.h"
@@ -19,14 +21,17 @@ namespace gi::render {
 class ForwardPass {
 public:
     struct Inputs {
-        const scene::GpuScene& scene;
+        const scene::GpuScene& scene;      // world-space vertices, materials, lights
         const ShadowPass& shadows;         // maps and GpuShadow table, already rendered
         const gl::Buffer& frameUniforms;   // FrameUniforms, std140
-        bool depthPrepass;
+        // RGBA16F, rgb = E_ind (W/m^2), a = view depth (m), at indirectSize texels (may be
+        // smaller than the target); nullptr: direct light only
+        const gl::Texture* indirect;
+        glm::ivec2 indirectSize;
+        bool depthPrepass;                 // render.depth_prepass
     };
     struct Outputs {
-        const gl::Framebuffer& target;     // colour attachment 0 + depth
-        glm::ivec2 size;                   // pixels
+        const gl::RenderTarget& target;    // RGBA32F colour + DEPTH_COMPONENT32F, cleared here
     };
 
     // Returns false with the shader error if the program does not build.

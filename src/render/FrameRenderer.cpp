@@ -132,23 +132,7 @@ void FrameRenderer::setPose(const scene::Scene& scene) {
     }
 }
 
-void FrameRenderer::resizeTargets(glm::ivec2 size) {
-    if (size == mRenderSize && mFramebuffer) return;
-    mRenderSize = size;
-    mColor = gl::createTexture2D(GL_RGBA32F, size, 1, "frame/radiance");
-    mDepth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size, 1, "frame/depth");
-    mFramebuffer = gl::createFramebuffer("frame/target");
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, mColor.id(), 0);
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
-}
-
-void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSize,
-        OutputComponent output, gl::GpuProfiler& profiler) {
-    const gl::MemoryScope memoryScope(mMemory);
-    profiler.newFrame();
-    resizeTargets(outputSize * mSettings.supersample);
-    mLastOutput = output;
-
+void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputComponent output) {
     shader::FrameUniforms frame{};
     frame.viewProjection = camera.viewProjection();
     frame.inverseViewProjection = glm::inverse(frame.viewProjection);
@@ -162,8 +146,18 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     frame.screen = glm::vec4(glm::vec2(mRenderSize), 0.0f, 0.0f);
     frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, mSettings.voxel.depthUpsample ? 1 : 0);
     glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
+}
 
-    mShadows.execute(*mScene, profiler);
+void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSize,
+        OutputComponent output, gl::GpuProfiler& profiler) {
+    const gl::MemoryScope memoryScope(mMemory);
+    profiler.newFrame();
+    mTarget.resize(outputSize * mSettings.supersample);
+    mRenderSize = mTarget.size();
+    mLastOutput = output;
+    writeFrameUniforms(camera, output);
+
+    mShadows.execute({*mScene}, profiler);
     GiOutputs gi;
     if (mGi) {
         const DebugView debugView = outputAvailable(output, mMode)
@@ -178,20 +172,15 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
                             occupancy ? &*occupancy : nullptr},
                 profiler);
         gi = mGi->outputs();
-        if (gi.indirect) {
-            frame.screen = glm::vec4(glm::vec2(mRenderSize), glm::vec2(gi.size));
-            frame.counts.z = 1;
-            glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
-            glBindTextureUnit(BIND_TEX_INDIRECT, gi.indirect->id());
-        }
     }
     if (gi.debugImage) {
-        glCopyImageSubData(gi.debugImage->id(), GL_TEXTURE_2D, 0, 0, 0, 0, mColor.id(), GL_TEXTURE_2D,
-                0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
+        glCopyImageSubData(gi.debugImage->id(), GL_TEXTURE_2D, 0, 0, 0, 0, mTarget.color().id(),
+                GL_TEXTURE_2D, 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
         return;
     }
-    mForward.execute({*mScene, mShadows, mFrameUniforms, mSettings.depthPrepass},
-            {mFramebuffer, mRenderSize}, profiler);
+    mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
+                             mSettings.depthPrepass},
+            {mTarget}, profiler);
 }
 
 float FrameRenderer::radianceScale() const {
@@ -201,8 +190,8 @@ float FrameRenderer::radianceScale() const {
 core::Image FrameRenderer::readback() const {
     core::Image full(mRenderSize.x, mRenderSize.y);
     std::vector<float> rgba(std::size_t(mRenderSize.x) * std::size_t(mRenderSize.y) * 4);
-    glGetTextureImage(mColor.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)),
-            rgba.data());
+    glGetTextureImage(mTarget.color().id(), 0, GL_RGBA, GL_FLOAT,
+            GLsizei(rgba.size() * sizeof(float)), rgba.data());
     // GL rows run bottom to top; images run top to bottom.
     const float scale = radianceScale();
     for (int y = 0; y < mRenderSize.y; ++y) {

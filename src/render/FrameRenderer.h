@@ -5,6 +5,7 @@
 
 #include "gl/GpuProfiler.h"
 #include "gl/MemoryRegistry.h"
+#include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "render/ForwardPass.h"
@@ -61,7 +62,7 @@ public:
 
     // RGBA32F linear radiance of the last frame times radianceScale()^-1 (alpha = geometry
     // coverage), render size: multiply by radianceScale() for W/(m^2 sr).
-    const gl::Texture& radiance() const { return mColor; }
+    const gl::Texture& radiance() const { return mTarget.color(); }
     // 1 / pre-exposure for radiometric outputs, 1 for the other debug views.
     float radianceScale() const;
     glm::ivec2 renderSize() const { return mRenderSize; }
@@ -74,7 +75,8 @@ public:
     const GiTechnique* technique() const { return mGi.get(); }
 
 private:
-    void resizeTargets(glm::ivec2 size);
+    // The camera's FrameUniforms for this frame: the only write of the buffer per frame.
+    void writeFrameUniforms(const scene::CameraView& camera, OutputComponent output);
     std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);
 
     // The plan for `requested`, this scene and mAllLights; mSettings is applyPlan of it and
@@ -91,9 +93,9 @@ private:
     std::unique_ptr<scene::GpuScene> mScene;
     std::vector<scene::Light> mLights;
     gl::Buffer mFrameUniforms;
-    gl::Texture mColor, mDepth;
+    gl::RenderTarget mTarget{"frame/target", {GL_RGBA32F, "frame/radiance"},
+            {GL_DEPTH_COMPONENT32F, "frame/depth"}};
     OutputComponent mLastOutput = OutputComponent::Final;
-    gl::Framebuffer mFramebuffer;
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;
     std::uint64_t mShadowGeometry = 0;   // GpuScene::geometryVersion() the maps were drawn for

@@ -124,7 +124,8 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
     mDirty = true;
 }
 
-void ShadowPass::execute(const scene::GpuScene& scene, gl::GpuProfiler& profiler) {
+void ShadowPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
+    const scene::GpuScene& scene = in.scene;
     if (!mDirty) return;
     mDirty = false;
     if (mViews.empty()) return;

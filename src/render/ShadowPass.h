@@ -30,8 +30,12 @@ public:
     void setLights(const std::vector<scene::Light>& lights, const scene::Aabb& bounds,
             const ShadowSettings& settings);
 
-    // Renders the maps if anything changed since the last call.
-    void execute(const scene::GpuScene& scene, gl::GpuProfiler& profiler);
+    struct Inputs {
+        const scene::GpuScene& scene;   // world-space casters, materials (alpha-masked ones)
+    };
+    // Renders the maps (owned here: their layout follows setLights) if anything changed since
+    // the last call.
+    void execute(const Inputs& in, gl::GpuProfiler& profiler);
 
     // Binds the maps and the GpuShadow table at their shared.h slots.
     void bind() const override;

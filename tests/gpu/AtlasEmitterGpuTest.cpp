@@ -118,7 +118,7 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
     uniforms.counts = glm::ivec4(0, OUTPUT_FINAL, 0, 0);
     const gl::Buffer frameUniforms = gl::createBuffer(sizeof uniforms, &uniforms, 0, "test/frame");
     gl::GpuProfiler profiler;
-    shadows.execute(gpuScene, profiler);
+    shadows.execute({gpuScene}, profiler);
 
     voxel::VoxelizationManager voxels;
     ASSERT_TRUE(voxels.init(shaders, scene, error)) << error;

@@ -1,6 +1,7 @@
 // glTF loader tests of what the node tree places besides meshes (cameras, punctual lights),
 // scene selection, bounds and warnings; and the real Sponza, when its files are present.
 #include "GltfLoaderTestSupport.h"
+#include "Sponza.h"
 
 #include <gtest/gtest.h>
 
@@ -197,17 +198,13 @@ TEST(GltfLoader, DropsATrailingPartialTriangleWithAWarning) {
 }
 
 // ---------------------------------------------------------------------------------------------
-
-
-// ---------------------------------------------------------------------------------------------
-// The real Sponza, when present (DESIGN.md: read from ../shared/assets, never committed).
+// The real Sponza, when present (support/Sponza.h: never committed, read from beside the
+// clone or $VOXATLAS_SPONZA).
 
 TEST(GltfLoaderSponza, LoadsWithAllTrianglesAndTextures) {
-    const std::filesystem::path path = std::filesystem::path(VOXATLAS_TEST_DATA_DIR) /
-                                       "../../shared/assets/sponza/Sponza.gltf";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "Sponza not found at " << path;
+    VOXATLAS_SPONZA_OR_SKIP(path);
     const auto start = std::chrono::steady_clock::now();
-    const Loaded loaded = loadFile(path.string());
+    const Loaded loaded = loadFile(path);
     const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(loaded.ok) << loaded.error;

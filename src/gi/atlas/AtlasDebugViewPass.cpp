@@ -13,25 +13,14 @@ bool AtlasDebugViewPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void AtlasDebugViewPass::execute(const Inputs& in, glm::ivec2 size, gl::GpuProfiler& profiler) {
-    if (size != mSize) {
-        mSize = size;
-        mImage = gl::createTexture2D(GL_RGBA32F, size, 1, "atlas/debug_view");
-        mDepth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size, 1, "atlas/debug_view_depth");
-        mFramebuffer = gl::createFramebuffer("atlas/debug_view");
-        glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, mImage.id(), 0);
-        glNamedFramebufferTexture(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
-    }
+void AtlasDebugViewPass::execute(const Inputs& in, const Outputs& out,
+        gl::GpuProfiler& profiler) {
+    mTarget.resize(out.size);
     gl::GpuScope scope(profiler, "atlas/debug_view");
-    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
-    glViewport(0, 0, size.x, size.y);
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    const float clearDepth = 1.0f;
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
+    mTarget.bind();
+    mTarget.clear();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());

@@ -3,12 +3,13 @@
 // debug_view.frag says what each shows).
 // Inputs : GpuScene, AtlasGeometry, frame UBO, AtlasUniforms (size.w = ATLAS_VIEW_*),
 //          AtlasTextures.
-// Outputs: RGBA32F at the output size, linear values, alpha = 1 where a surface was drawn.
+// Outputs: image(), RGBA32F at the output size, linear values, alpha = 1 where a surface was drawn.
 #pragma once
 
 #include "gi/atlas/AtlasGeometry.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
+#include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
 
@@ -19,22 +20,24 @@ namespace gi::atlas {
 class AtlasDebugViewPass {
 public:
     struct Inputs {
-        const scene::GpuScene& scene;
-        const AtlasGeometry& geometry;
-        const gl::Buffer& frameUniforms;
-        const gl::Buffer& atlasUniforms;
-        const AtlasTextures& textures;
+        const scene::GpuScene& scene;      // draws, materials
+        const AtlasGeometry& geometry;     // world positions and atlas coordinates
+        const gl::Buffer& frameUniforms;   // FrameUniforms, std140: the camera
+        const gl::Buffer& atlasUniforms;   // AtlasUniforms, std140: size.w = ATLAS_VIEW_*
+        const AtlasTextures& textures;     // every layer, sampled
+    };
+    struct Outputs {
+        glm::ivec2 size;                   // pixels of image(); reallocated when it changes
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    void execute(const Inputs& in, glm::ivec2 size, gl::GpuProfiler& profiler);
-    const gl::Texture& image() const { return mImage; }
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
+    const gl::Texture& image() const { return mTarget.color(); }
 
 private:
     gl::ProgramRef mProgram;
-    gl::Texture mImage, mDepth;
-    gl::Framebuffer mFramebuffer;
-    glm::ivec2 mSize{0};
+    gl::RenderTarget mTarget{"atlas/debug_view", {GL_RGBA32F, "atlas/debug_view"},
+            {GL_DEPTH_COMPONENT32F, "atlas/debug_view_depth"}};
 };
 
 } // namespace gi::atlas

@@ -1,5 +1,6 @@
 #include "gi/atlas/AtlasDilatePass.h"
 
+#include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
 namespace gi::atlas {
@@ -16,13 +17,11 @@ bool AtlasDilatePass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 bool AtlasDilatePass::attach(const AtlasTextures& textures, std::string& error) {
     mResolution = textures.resolution;
-    mFramebuffer = gl::createFramebuffer("atlas/dilate");
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, textures.lit.id(), 0);
-    return gl::framebufferComplete(mFramebuffer, "atlas/dilate", error);
+    return gl::attachFramebuffer(mFramebuffer, "atlas/dilate", {&textures.lit}, nullptr, error);
 }
 
-void AtlasDilatePass::execute(
-        const AtlasTextures& textures, const gl::Buffer& atlasUniforms, gl::GpuProfiler& profiler) {
+void AtlasDilatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    (void)out;   // textures.lit is attached to mFramebuffer
     gl::GpuScope scope(profiler, "atlas/dilate");
     glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
     glViewport(0, 0, mResolution, mResolution);
@@ -30,8 +29,8 @@ void AtlasDilatePass::execute(
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glUseProgram(mProgram.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_SUMS, textures.sums.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sums.id());
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -13,10 +13,18 @@ namespace gi::atlas {
 
 class AtlasDilatePass {
 public:
+    struct Inputs {
+        const AtlasTextures& textures;     // sums (RGBA32F, rgb = gather sums, a = written)
+        const gl::Buffer& atlasUniforms;   // AtlasUniforms, std140: R, 1 / samples, radius
+    };
+    struct Outputs {
+        const AtlasTextures& textures;     // lit, the layer attach() bound
+    };
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
+    // Draws into textures.lit from now on; false with a message if that is not renderable.
     bool attach(const AtlasTextures& textures, std::string& error);
-    void execute(const AtlasTextures& textures, const gl::Buffer& atlasUniforms,
-            gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
     gl::ProgramRef mProgram;

@@ -1,5 +1,6 @@
 #include "gi/atlas/AtlasGBufferPass.h"
 
+#include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
 namespace gi::atlas {
@@ -31,17 +32,9 @@ bool AtlasGBufferPass::attach(const AtlasTextures& textures, std::string& error)
     mResolution = textures.resolution;
     mDepth = gl::createTexture2D(
             GL_DEPTH_COMPONENT32F, {mResolution, mResolution}, 1, "atlas/gbuffer_depth");
-    mFramebuffer = gl::createFramebuffer("atlas/gbuffer");
-    const GLuint fbo = mFramebuffer.id();
-    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, textures.direct.id(), 0);
-    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, textures.normal.id(), 0);
-    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, textures.position.id(), 0);
-    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, textures.albedo.id(), 0);
-    glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
-    const GLenum buffers[] = {
-            GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
-    glNamedFramebufferDrawBuffers(fbo, 4, buffers);
-    return gl::framebufferComplete(mFramebuffer, "atlas/gbuffer", error);
+    return gl::attachFramebuffer(mFramebuffer, "atlas/gbuffer",
+            {&textures.direct, &textures.normal, &textures.position, &textures.albedo}, &mDepth,
+            error);
 }
 
 void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {

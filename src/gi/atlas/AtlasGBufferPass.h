@@ -24,14 +24,14 @@ namespace gi::atlas {
 class AtlasGBufferPass {
 public:
     struct Inputs {
-        const scene::GpuScene& scene;
-        const AtlasGeometry& geometry;
-        const ShadowMaps& shadows;
-        const gl::Buffer& frameUniforms; // FrameUniforms, std140
-        const gl::Buffer& atlasUniforms; // AtlasUniforms, std140
+        const scene::GpuScene& scene;    // draws, materials, lights
+        const AtlasGeometry& geometry;   // world positions (m) and atlas coordinates
+        const ShadowMaps& shadows;       // maps of every light, already rendered
+        const gl::Buffer& frameUniforms; // FrameUniforms, std140: light count, shadows on/off
+        const gl::Buffer& atlasUniforms; // AtlasUniforms, std140: resolution
     };
     struct Outputs {
-        const AtlasTextures& textures;
+        const AtlasTextures& textures;   // direct, normal, position, albedo (attach() bound)
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);

@@ -1,5 +1,6 @@
 #include "gi/atlas/AtlasGatherPass.h"
 
+#include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
 namespace gi::atlas {
@@ -22,9 +23,7 @@ bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 bool AtlasGatherPass::attach(const AtlasTextures& textures, std::string& error) {
     mResolution = textures.resolution;
-    mFramebuffer = gl::createFramebuffer("atlas/gather");
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, textures.sums.id(), 0);
-    return gl::framebufferComplete(mFramebuffer, "atlas/gather", error);
+    return gl::attachFramebuffer(mFramebuffer, "atlas/gather", {&textures.sums}, nullptr, error);
 }
 
 void AtlasGatherPass::clear() {
@@ -32,7 +31,8 @@ void AtlasGatherPass::clear() {
     glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
 }
 
-void AtlasGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
+void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    (void)out;   // textures.sums is attached to mFramebuffer
     gl::GpuScope scope(profiler, "atlas/gather");
     const GLuint program = in.occupancy ? mVoxelProgram.id() : mProgram.id();
     glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());

@@ -22,17 +22,22 @@ namespace gi::atlas {
 class AtlasGatherPass {
 public:
     struct Inputs {
-        const AtlasTextures& textures;
-        const gl::Texture& samples;
-        const gl::Buffer& atlasUniforms;
+        const AtlasTextures& textures;    // direct, normal, position of the G-buffer
+        const gl::Texture& samples;       // RG32F, N x 1 Hammersley points in [0,1)^2
+        const gl::Buffer& atlasUniforms;  // AtlasUniforms, std140: R, N, estimator, rotation
         const OccupancyVolume* occupancy; // nullptr: no visibility test
         const AtlasSenderSamplingPass& senderSampling; // executed for this set (area estimator)
     };
+    struct Outputs {
+        const AtlasTextures& textures;    // sums, the layer attach() bound (blended into)
+    };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
+    // Draws into textures.sums from now on; false with a message if that is not renderable.
     bool attach(const AtlasTextures& textures, std::string& error);
+    // Zeroes the sums: the next execute starts a new accumulation.
     void clear();
-    void execute(const Inputs& in, gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
     gl::ProgramRef mProgram, mVoxelProgram;

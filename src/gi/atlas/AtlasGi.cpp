@@ -49,7 +49,7 @@ bool AtlasGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::s
     return mPose.init(shaders, error) && mGBuffer.init(shaders, error) &&
             mSenderSampling.init(shaders, error) &&
             mGather.init(shaders, error) && mDilate.init(shaders, error) &&
-            mResolve.init(shaders, error) && mDebugView.init(shaders, error);
+            mResolve.init(shaders, error) && mDebugViewPass.init(shaders, error);
 }
 
 bool AtlasGi::buildAtlasGeometry(std::string& error) {
@@ -122,104 +122,112 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     mShadowSettings = settings.shadow;
     mConfigured = true;
     if (changed) {
-        mGBufferValid = false;
-        mSamplesDone = 0;
-        mSetIndex = 0;
+        mContent.gBufferValid = false;
+        mContent.samples = 0;
         mFrameIndex = 0;
         mWarnedNoOccupancy = false;
     }
     return true;
 }
 
-void AtlasGi::writeUniforms() {
-    shader::AtlasUniforms& u = mUniformData;
-    u.size.x = mSettings.resolution;
-    u.size.y = mSettings.samples;
-    u.size.z = mSettings.estimator;
+void AtlasGi::writeUniforms(const FramePlan& plan) {
+    shader::AtlasUniforms u{};
+    u.size = glm::ivec4(mSettings.resolution, mSettings.samples, mSettings.estimator, plan.view);
     // The area estimator's 1/r^2 stops growing within two texel edges of the receiver.
-    u.sampling.z = mSettings.estimator == ATLAS_ESTIMATOR_AREA
-                           ? float(4.0 * mAtlas.texelSize * mAtlas.texelSize)
-                           : 2.0f * glm::pi<float>();
-    u.sampling.w = mSamplesDone > 0 ? 1.0f / float(mSamplesDone) : 0.0f;
+    const float estimatorConstant = mSettings.estimator == ATLAS_ESTIMATOR_AREA
+            ? float(4.0 * mAtlas.texelSize * mAtlas.texelSize)
+            : 2.0f * glm::pi<float>();
+    // The dilation normalises the sums as they are after this frame's gather.
+    const float normalisation = mContent.samples > 0 ? 1.0f / float(mContent.samples) : 0.0f;
+    u.sampling = glm::vec4(plan.rotation, estimatorConstant, normalisation);
     u.dilation = glm::vec4(float((mSettings.gutter + 1) / 2), 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
-bool AtlasGi::inputsChanged(const GiFrameInputs& in) {
-    // Moving instances move their shadows, so the G-buffer's direct light changes.
-    const bool changed = mScene != &in.scene || !sameLights(mLights, in.lights) ||
-                         mGeometryVersion != in.scene.geometryVersion();
-    mScene = &in.scene;
-    mGeometryVersion = in.scene.geometryVersion();
-    if (changed) mLights = in.lights;
-    return changed;
-}
-
-void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
-    if (mMesh.triangleCount() == 0) return;
-    if (mFollowsPose && mPosedGeometry != in.scene.geometryVersion()) {
-        mPose.execute(in.scene, mGeometry, profiler);
-        mPosedGeometry = in.scene.geometryVersion();
-    }
-    if (inputsChanged(in) || !mSettings.progressive) mGBufferValid = false;
-    const OccupancyVolume* occupancy =
-            mSettings.visibility == ATLAS_VISIBILITY_VOXEL ? in.occupancy : nullptr;
-    if (mSettings.visibility == ATLAS_VISIBILITY_VOXEL && !in.occupancy && !mWarnedNoOccupancy) {
+const OccupancyVolume* AtlasGi::visibilityOccupancy(const GiFrameInputs& in) {
+    if (mSettings.visibility != ATLAS_VISIBILITY_VOXEL) return nullptr;
+    if (!in.occupancy && !mWarnedNoOccupancy) {
         std::fprintf(stderr,
                 "atlas: atlas.visibility=voxel needs a voxel occupancy volume and "
                 "this frame has none; senders are not occluded\n");
         mWarnedNoOccupancy = true;
     }
-    // Visibility changes whenever the occupancy is recomputed (it moved, or geometry did).
-    if ((occupancy != nullptr) != mHadOccupancy ||
-            (occupancy && occupancy->version != mOccupancyVersion)) {
-        mSamplesDone = 0;
-    }
-    mHadOccupancy = occupancy != nullptr;
-    mOccupancyVersion = occupancy ? occupancy->version : 0;
+    return in.occupancy;
+}
 
-    if (!mGBufferValid) {
-        writeUniforms();
+AtlasGi::FramePlan AtlasGi::planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy) {
+    Content& c = mContent;
+    // Moving instances move their shadows, so the G-buffer's direct light changes.
+    const bool inputsChanged = c.scene != &in.scene || !sameLights(c.lights, in.lights) ||
+                               c.geometryVersion != in.scene.geometryVersion();
+    if (inputsChanged) {
+        c.scene = &in.scene;
+        c.lights = in.lights;
+        c.geometryVersion = in.scene.geometryVersion();
+    }
+    // Without progressive mode every frame is computed from scratch (the thesis).
+    if (inputsChanged || !mSettings.progressive) c.gBufferValid = false;
+    // Visibility changes whenever the occupancy is recomputed (it moved, or geometry did).
+    const std::optional<std::uint64_t> visibility =
+            occupancy ? std::optional<std::uint64_t>(occupancy->version) : std::nullopt;
+    if (visibility != c.occupancyVersion) c.samples = 0;
+    c.occupancyVersion = visibility;
+
+    FramePlan plan;
+    plan.drawGBuffer = !c.gBufferValid;
+    if (plan.drawGBuffer) {
+        c.gBufferValid = true;
+        c.samples = 0;
+    }
+    plan.gather = !mSettings.progressive || c.samples == 0 ||
+                  (mSettings.rotate && c.samples < mSettings.targetSamples);
+    if (plan.gather) {
+        if (!mSettings.progressive) c.samples = 0;
+        plan.restart = c.samples == 0;
+        // Progressive sets rotate with the sets summed so far, others with the frame.
+        const std::uint32_t set = mSettings.progressive
+                ? std::uint32_t(c.samples / std::max(mSettings.samples, 1))
+                : mFrameIndex;
+        plan.rotation = mSettings.rotate ? cranleyPattersonOffset(set) : glm::vec2(0.0f);
+        c.samples += mSettings.samples;
+    }
+    plan.view = atlasView(in.debugView);
+    return plan;
+}
+
+void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    if (mMesh.triangleCount() == 0) return;
+    if (mFollowsPose && mPosedGeometry != in.scene.geometryVersion()) {
+        mPose.execute({in.scene}, {mGeometry}, profiler);
+        mPosedGeometry = in.scene.geometryVersion();
+    }
+    const OccupancyVolume* occupancy = visibilityOccupancy(in);
+    const FramePlan plan = planFrame(in, occupancy);
+    writeUniforms(plan);
+
+    if (plan.drawGBuffer) {
         mGBuffer.execute({in.scene, mGeometry, in.shadows, in.frameUniforms, mUniforms},
                 {mTextures}, profiler);
-        mGBufferValid = true;
-        mSenderTableValid = false;
-        mSamplesDone = 0;
     }
-    if (mSamplesDone == 0) mSetIndex = 0;
-    const bool gather = !mSettings.progressive || mSamplesDone == 0 ||
-            (mSettings.rotate && mSamplesDone < mSettings.targetSamples);
-    if (gather) {
-        if (!mSettings.progressive) mSamplesDone = 0;
-        if (mSamplesDone == 0) mGather.clear();
-        const std::uint32_t set = mSettings.progressive ? mSetIndex : mFrameIndex;
-        const glm::vec2 offset = mSettings.rotate ? cranleyPattersonOffset(set) : glm::vec2(0.0f);
-        mUniformData.sampling.x = offset.x;
-        mUniformData.sampling.y = offset.y;
-        writeUniforms();
+    if (plan.gather) {
+        if (plan.restart) mGather.clear();
         if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
+            // The power table follows the G-buffer's direct light.
             mSenderSampling.execute(
-                    mTextures, mUniforms, mSettings.samples, !mSenderTableValid, profiler);
-            mSenderTableValid = true;
+                    {mTextures, mUniforms, mSettings.samples, plan.drawGBuffer}, profiler);
         }
-        mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling}, profiler);
-        mSamplesDone += mSettings.samples;
-        ++mSetIndex;
-        writeUniforms();
-        mDilate.execute(mTextures, mUniforms, profiler);
+        mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling},
+                {mTextures}, profiler);
+        mDilate.execute({mTextures, mUniforms}, {mTextures}, profiler);
     }
     ++mFrameIndex;
 
-    mResolve.resize(in.outputSize);
-    mResolve.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures}, profiler);
-
-    const int view = atlasView(in.debugView);
-    mShowDebug = view >= 0;
-    if (mShowDebug) {
-        mUniformData.size.w = view;
-        writeUniforms();
-        mDebugView.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},
-                in.outputSize, profiler);
+    mResolve.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},
+            {in.outputSize}, profiler);
+    mDebugView = plan.view;
+    if (mDebugView >= 0) {
+        mDebugViewPass.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},
+                {in.outputSize}, profiler);
     }
 }
 
@@ -228,7 +236,7 @@ GiOutputs AtlasGi::outputs() const {
     if (mMesh.triangleCount() == 0) return out;
     out.indirect = &mResolve.indirect();
     out.size = mResolve.size();
-    out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
+    out.debugImage = mDebugView >= 0 ? &mDebugViewPass.image() : nullptr;
     return out;
 }
 

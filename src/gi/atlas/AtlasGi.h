@@ -29,6 +29,8 @@
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/Shared.h"
 
+#include <optional>
+
 namespace gi::atlas {
 
 class AtlasGi final : public GiTechnique {
@@ -40,7 +42,7 @@ public:
     GiOutputs outputs() const override;
 
     // Samples per texel accumulated into the lit atlas so far (progressive mode's progress).
-    int accumulatedSamples() const { return mSamplesDone; }
+    int accumulatedSamples() const { return mContent.samples; }
     std::string status() const override;
     // For tests and the overlay.
     const Atlas& atlas() const { return mAtlas; }
@@ -48,9 +50,34 @@ public:
     const AtlasTextures& textures() const { return mTextures; }
 
 private:
+    // What the atlas layers hold, and what they were computed from: a frame redraws the
+    // G-buffer only when what it shows changed, and gathers only while the sums want samples.
+    struct Content {
+        bool gBufferValid = false;   // direct, normal, position, albedo match the three below
+        const scene::GpuScene* scene = nullptr;
+        std::vector<scene::Light> lights;
+        std::uint64_t geometryVersion = 0;
+        // The occupancy version the sums were gathered against (none: no visibility test);
+        // another one occludes differently, so the sums start over.
+        std::optional<std::uint64_t> occupancyVersion;
+        int samples = 0;             // samples per texel in the sums since they started over
+    };
+    // What one frame does, decided before any pass runs so the uniforms are written once.
+    struct FramePlan {
+        bool drawGBuffer = false;
+        bool gather = false;         // gathers one sample set
+        bool restart = false;        // ... into cleared sums
+        glm::vec2 rotation{0.0f};    // Cranley-Patterson offset of that set
+        int view = -1;               // ATLAS_VIEW_* of the debug view shown, -1: none
+    };
+
     bool buildAtlasGeometry(std::string& error);
-    void writeUniforms();
-    bool inputsChanged(const GiFrameInputs& in);
+    // The occupancy the gather tests visibility against (atlas.visibility=voxel), or nullptr.
+    const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
+    // Decides this frame's work and records in mContent what the layers will hold after it.
+    FramePlan planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy);
+    // The frame's AtlasUniforms: the only write of the buffer per frame.
+    void writeUniforms(const FramePlan& plan);
 
     AtlasMesh mMesh;
     Atlas mAtlas;
@@ -63,21 +90,11 @@ private:
     AtlasTextures mTextures;
     gl::Texture mSamples;
     gl::Buffer mUniforms;
-    shader::AtlasUniforms mUniformData{};
 
-    // What the current G-buffer and sums were computed for.
-    bool mGBufferValid = false;
-    bool mSenderTableValid = false; // the sender sampling table matches the G-buffer
-    int mSamplesDone = 0;
-    std::uint32_t mSetIndex = 0;   // rotated sets accumulated since the last restart
-    std::uint32_t mFrameIndex = 0; // frames since configure (non-progressive rotation)
-    std::vector<scene::Light> mLights;
-    const scene::GpuScene* mScene = nullptr;
-    std::uint64_t mGeometryVersion = 0;
-    std::uint64_t mOccupancyVersion = 0;
-    bool mHadOccupancy = false;
-    bool mWarnedNoOccupancy = false;
-    bool mShowDebug = false;
+    Content mContent;
+    std::uint32_t mFrameIndex = 0;     // frames since configure: the set when not progressive
+    bool mWarnedNoOccupancy = false;   // the missing occupancy is reported once per configure
+    int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
 
     // Animated instances: the atlas vertices follow GpuScene's pose (AtlasPosePass).
     bool mFollowsPose = false;
@@ -89,7 +106,7 @@ private:
     AtlasGatherPass mGather;
     AtlasDilatePass mDilate;
     AtlasResolvePass mResolve;
-    AtlasDebugViewPass mDebugView;
+    AtlasDebugViewPass mDebugViewPass;
 };
 
 } // namespace gi::atlas

@@ -10,12 +10,12 @@ bool AtlasPosePass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void AtlasPosePass::execute(const scene::GpuScene& scene, const AtlasGeometry& geometry,
-        gl::GpuProfiler& profiler) {
+void AtlasPosePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    const AtlasGeometry& geometry = out.geometry;
     if (!geometry.sources() || geometry.vertexCount() == 0) return;
     gl::GpuScope scope(profiler, "atlas/follow-pose");
     glUseProgram(mProgram.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SCENE_VERTICES, scene.vertexBuffer().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SCENE_VERTICES, in.scene.vertexBuffer().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_VERTICES, geometry.vertexBuffer().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SOURCES, geometry.sources().id());
     const auto groups = GLuint((geometry.vertexCount() + ATLAS_POSE_LOCAL_SIZE - 1) / ATLAS_POSE_LOCAL_SIZE);

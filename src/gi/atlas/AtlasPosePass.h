@@ -14,8 +14,15 @@ namespace gi::atlas {
 
 class AtlasPosePass {
 public:
+    struct Inputs {
+        const scene::GpuScene& scene;      // vertex buffer in the current pose (world space)
+    };
+    struct Outputs {
+        const AtlasGeometry& geometry;     // vertex buffer: positions (m), normals rewritten
+    };
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    void execute(const scene::GpuScene& scene, const AtlasGeometry& geometry, gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
     gl::ProgramRef mProgram;

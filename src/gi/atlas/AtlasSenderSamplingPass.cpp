@@ -28,10 +28,11 @@ bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& erro
     return bool(mPool);
 }
 
-void AtlasSenderSamplingPass::execute(const AtlasTextures& textures,
-        const gl::Buffer& atlasUniforms, int samples, bool table, gl::GpuProfiler& profiler) {
+void AtlasSenderSamplingPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     gl::GpuScope scope(profiler, "atlas/sender_sampling");
-    const int r = textures.resolution;
+    const int r = in.textures.resolution;
+    const int samples = in.samples;
+    bool table = in.rebuildTable;
     if (r != mResolution) {
         mResolution = r;
         mRowPower = gl::createBuffer(std::size_t(r) * sizeof(float), nullptr, 0,
@@ -45,9 +46,9 @@ void AtlasSenderSamplingPass::execute(const AtlasTextures& textures,
         mPoints = gl::createBuffer(std::size_t(samples) * ATLAS_POOL_STRIDE * sizeof(GLuint),
                 nullptr, 0, "atlas/sender_sampling_pool");
     }
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, textures.direct.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, textures.position.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.direct.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     bind();
     if (table) {
         glUseProgram(mRows.id());

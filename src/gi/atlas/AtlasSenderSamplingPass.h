@@ -16,8 +16,8 @@
 //    between texels instead of one error shared by the whole image.
 // Inputs : AtlasTextures direct (rgb = L, a > 0: written) and position (w = a(y), m^2);
 //          AtlasUniforms (R, N, sampling.x = the set's rotation).
-// Outputs: the buffers at BIND_SSBO_ATLAS_SENDER_ROWS / _BLOCKS / _POOL (shared.h), bound by
-//          bind() for the gather.
+// Outputs: the buffers at BIND_SSBO_ATLAS_SENDER_ROWS / _BLOCKS / _POOL (shared.h), owned by
+//          the pass (sized by R and N) and bound by bind() for the gather.
 #pragma once
 
 #include "gi/atlas/AtlasTextures.h"
@@ -30,11 +30,17 @@ namespace gi::atlas {
 
 class AtlasSenderSamplingPass {
 public:
+    struct Inputs {
+        const AtlasTextures& textures;     // direct (rgb = L, W/(m^2 sr)), position (w = m^2)
+        const gl::Buffer& atlasUniforms;   // AtlasUniforms, std140: R, N, set rotation
+        int samples;                       // N, points in the pool
+        bool rebuildTable;                 // the G-buffer changed since the last execute
+    };
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    // Rebuilds the power table from the G-buffer when `table` is set, then the point pool of
-    // the current set.
-    void execute(const AtlasTextures& textures, const gl::Buffer& atlasUniforms, int samples,
-            bool table, gl::GpuProfiler& profiler);
+    // Rebuilds the power table from the G-buffer when asked to (or when the atlas resolution
+    // changed), then the point pool of the current set.
+    void execute(const Inputs& in, gl::GpuProfiler& profiler);
     // Binds the table and the pool for a consumer (the gather).
     void bind() const;
 

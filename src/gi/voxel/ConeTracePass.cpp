@@ -11,32 +11,14 @@ bool ConeTracePass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void ConeTracePass::resize(glm::ivec2 size) {
-    size = glm::max(size, glm::ivec2(1));
-    if (size == mSize) return;
-    mSize = size;
-    mIndirect = gl::createTexture2D(GL_RGBA16F, size, 1, "voxel/indirect");
-    glTextureParameteri(mIndirect.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(mIndirect.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(mIndirect.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(mIndirect.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    mDepth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size, 1, "voxel/trace_depth");
-    mFramebuffer = gl::createFramebuffer("voxel/trace");
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, mIndirect.id(), 0);
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
-}
-
-void ConeTracePass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
+void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    mTarget.resize(out.size);
+    mSize = mTarget.size();
     gl::GpuScope scope(profiler, "voxel/trace");
-    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
-    glViewport(0, 0, mSize.x, mSize.y);
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    const float clearDepth = 1.0f;
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
+    mTarget.bind();
+    mTarget.clear();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());

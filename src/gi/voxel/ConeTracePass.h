@@ -2,11 +2,13 @@
 // 4.2.5, 4.3.3.4): the scene is rasterised at that resolution and each fragment traces 9
 // cones through the cascade, writing indirect irradiance E_ind (W/m^2).
 // Inputs : GpuScene, frame UBO (camera), VoxelUniforms, VoxelTextures (sampled, filtered).
-// Outputs: RGBA16F target: rgb = E_ind, a = view depth (m); cleared to 0 where no surface.
+// Outputs: indirect(), RGBA16F at Outputs::size: rgb = E_ind, a = view depth (m); cleared to
+//          0 where no surface.
 #pragma once
 
 #include "gi/voxel/VoxelTextures.h"
 #include "gl/GpuProfiler.h"
+#include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
 
@@ -17,23 +19,25 @@ namespace gi::voxel {
 class ConeTracePass {
 public:
     struct Inputs {
-        const scene::GpuScene& scene;
-        const gl::Buffer& frameUniforms;
-        const gl::Buffer& voxelUniforms;
-        const VoxelTextures& textures;
+        const scene::GpuScene& scene;      // world-space triangles, materials
+        const gl::Buffer& frameUniforms;   // FrameUniforms, std140: the camera
+        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: placement, cone set-up
+        const VoxelTextures& textures;     // albedo, irradiance, normal, pyramid; propagated
+    };
+    struct Outputs {
+        glm::ivec2 size;                   // pixels of indirect(); reallocated when it changes
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    void resize(glm::ivec2 size);
-    void execute(const Inputs& in, gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
-    const gl::Texture& indirect() const { return mIndirect; }
+    const gl::Texture& indirect() const { return mTarget.color(); }
     glm::ivec2 size() const { return mSize; }
 
 private:
     gl::ProgramRef mProgram;
-    gl::Texture mIndirect, mDepth;
-    gl::Framebuffer mFramebuffer;
+    gl::RenderTarget mTarget{"voxel/trace", {GL_RGBA16F, "voxel/indirect", true},
+            {GL_DEPTH_COMPONENT32F, "voxel/trace_depth"}};
     glm::ivec2 mSize{0};
 };
 

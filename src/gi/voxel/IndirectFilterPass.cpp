@@ -1,5 +1,6 @@
 #include "gi/voxel/IndirectFilterPass.h"
 
+#include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
 namespace gi::voxel {
@@ -10,20 +11,17 @@ bool IndirectFilterPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void IndirectFilterPass::execute(const gl::Texture& source, glm::ivec2 size,
-        const gl::Buffer& voxelUniforms, gl::GpuProfiler& profiler) {
+void IndirectFilterPass::execute(const Inputs& in, const Outputs& out,
+        gl::GpuProfiler& profiler) {
+    const glm::ivec2 size = out.size;
     if (size != mSize) {
         mSize = size;
-        mResult = gl::createTexture2D(GL_RGBA16F, size, 1, "voxel/indirect_filtered");
-        glTextureParameteri(mResult.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(mResult.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(mResult.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(mResult.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        mResult = gl::createTargetTexture({GL_RGBA16F, "voxel/indirect_filtered", true}, size);
     }
     gl::GpuScope scope(profiler, "voxel/filter");
     glUseProgram(mProgram.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, voxelUniforms.id());
-    glBindTextureUnit(BIND_TEX_FILTER_SOURCE, source.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
+    glBindTextureUnit(BIND_TEX_FILTER_SOURCE, in.source.id());
     glBindImageTexture(BIND_IMG_FILTER_TARGET, mResult.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     const glm::ivec2 groups = (size + VOXEL_FILTER_LOCAL_SIZE - 1) / VOXEL_FILTER_LOCAL_SIZE;
     glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);

@@ -3,7 +3,7 @@
 // texels (at voxel.trace_scale 0.5, scaled with the trace scale so it covers the same part of
 // the image) that, with the per-pixel cone jitter, averages 16 cone rings per pixel.
 // Inputs : ConeTracePass output (RGBA16F, rgb = E_ind W/m^2, a = view depth m), VoxelUniforms.
-// Outputs: RGBA16F texture of the same size and meaning.
+// Outputs: result(), RGBA16F texture of the same size and meaning.
 #pragma once
 
 #include "gl/GpuProfiler.h"
@@ -16,9 +16,16 @@ namespace gi::voxel {
 
 class IndirectFilterPass {
 public:
+    struct Inputs {
+        const gl::Texture& source;         // RGBA16F, rgb = E_ind (W/m^2), a = view depth (m)
+        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: smoothing.x = radius
+    };
+    struct Outputs {
+        glm::ivec2 size;                   // pixels of source and of result()
+    };
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    void execute(const gl::Texture& source, glm::ivec2 size, const gl::Buffer& voxelUniforms,
-            gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
     const gl::Texture& result() const { return mResult; }
 
 private:

@@ -94,16 +94,18 @@ bool InjectPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     if (!mInjectProgram) return false;
     mFinalizeProgram = shaders.build({"voxel/inject_finalize",
             {{GL_COMPUTE_SHADER, "voxel/inject_finalize.comp"}}, {}}, error);
-    mFramebuffer = gl::createFramebuffer("voxel/inject");
     return bool(mFinalizeProgram);
 }
 
-void InjectPass::resize(int resolution) {
-    if (resolution == mResolution) return;
-    mResolution = resolution;
-    mDepth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, {resolution, resolution}, 1, "voxel/inject_depth");
-    glNamedFramebufferTexture(mFramebuffer.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
-    glNamedFramebufferDrawBuffer(mFramebuffer.id(), GL_NONE);
+void InjectPass::setView(const LightView& view) const {
+    const glm::vec4 axis(view.axis, view.orthographic ? 1.0f : 0.0f);
+    for (const GLuint program : {mDepthProgram.id(), mInjectProgram.id()}) {
+        glProgramUniformMatrix4fv(program, LOC_INJECT_VIEW_PROJECTION, 1, GL_FALSE,
+                &view.viewProjection[0][0]);
+    }
+    glProgramUniform4fv(mInjectProgram.id(), LOC_INJECT_AXIS, 1, &axis[0]);
+    glProgramUniform1f(mInjectProgram.id(), LOC_INJECT_FOOTPRINT, view.footprint);
+    glProgramUniform1i(mInjectProgram.id(), LOC_INJECT_LIGHT, view.light);
 }
 
 void InjectPass::finalize(const Inputs& in, const VoxelTextures& t, gl::GpuProfiler& profiler) {
@@ -121,7 +123,7 @@ void InjectPass::finalize(const Inputs& in, const VoxelTextures& t, gl::GpuProfi
 }
 
 void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
-    resize(in.resolution);
+    mTarget.resize({in.resolution, in.resolution});
     const VoxelTextures& t = out.textures;
     std::size_t next = 0;
     while (next < in.views.size()) {
@@ -130,8 +132,7 @@ void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& 
             gl::GpuScope scope(profiler, "voxel/inject");
             // Each light averages its own fragments: counts restart at zero.
             glClearTexImage(t.lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-            glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
-            glViewport(0, 0, mResolution, mResolution);
+            mTarget.bind();
             glDisable(GL_CULL_FACE);
             glDisable(GL_BLEND);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -142,12 +143,9 @@ void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& 
             glBindImageTexture(BIND_IMG_VOXEL_HELPER, t.helper.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
             glBindImageTexture(BIND_IMG_VOXEL_LOCK, t.lock.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
             for (; next < in.views.size() && in.views[next].light == light; ++next) {
-                in.setView(in.views[next]);
-                // The depth mask gates clears too: enable it before clearing.
-                glDepthMask(GL_TRUE);
+                setView(in.views[next]);
+                mTarget.clear();
                 glDepthFunc(GL_LESS);
-                const float clearDepth = 1.0f;
-                glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
                 glUseProgram(mDepthProgram.id());
                 in.scene.drawAll(mDepthProgram.id(), false);
                 glDepthFunc(GL_LEQUAL);

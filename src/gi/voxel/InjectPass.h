@@ -4,18 +4,18 @@
 // averages its Lambert irradiance into its voxel. A depth pre-pass per view makes the
 // forced early depth test exact. After each light a compute pass adds the light's mean to
 // the per-voxel sum over lights (the "finalize" step) and the lock counts are cleared.
-// Inputs : GpuScene (geometry, lights), VoxelUniforms, cascade placement (for the views).
+// Inputs : GpuScene (geometry, lights), VoxelUniforms, the light views (injectionViews).
 // Outputs: VoxelTextures irradiance (rgb = E summed over lights, W/m^2; a = light count).
 #pragma once
 
 #include "gi/voxel/CascadeVolume.h"
 #include "gi/voxel/VoxelTextures.h"
 #include "gl/GpuProfiler.h"
+#include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
 #include "scene/Scene.h"
 
-#include <functional>
 #include <vector>
 
 namespace gi::voxel {
@@ -36,15 +36,15 @@ struct LightView {
 class InjectPass {
 public:
     struct Inputs {
-        const scene::GpuScene& scene;
+        const scene::GpuScene& scene;             // world-space triangles, materials, lights
         const std::vector<LightView>& views;      // grouped by light, in light order
-        const gl::Buffer& voxelUniforms;          // VoxelUniforms, std140; updated per view
-        // Writes one view's matrix and light index into voxelUniforms.
-        std::function<void(const LightView&)> setView;
+        const gl::Buffer& voxelUniforms;          // VoxelUniforms, std140: placement, modes
         int resolution;                           // light-view pixels per side
         bool fragmentMean;                        // INJECT_FRAGMENT: finalize after each light
     };
     struct Outputs {
+        // irradiance (rgba16f, W/m^2 x coverage, summed over lights); helper and lock are
+        // scratch, albedo is read for the coverage
         const VoxelTextures& textures;
     };
 
@@ -52,13 +52,12 @@ public:
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
-    void resize(int resolution);
+    // Sets one light view's matrix, axis, footprint and light on both programs.
+    void setView(const LightView& view) const;
     void finalize(const Inputs& in, const VoxelTextures& textures, gl::GpuProfiler& profiler);
 
     gl::ProgramRef mDepthProgram, mInjectProgram, mFinalizeProgram;
-    gl::Framebuffer mFramebuffer;
-    gl::Texture mDepth;
-    int mResolution = 0;
+    gl::RenderTarget mTarget{"voxel/inject", {}, {GL_DEPTH_COMPONENT32F, "voxel/inject_depth"}};
 };
 
 } // namespace gi::voxel

@@ -10,7 +10,8 @@ bool PropagatePass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void PropagatePass::execute(const Inputs& in, const VoxelTextures& t, gl::GpuProfiler& profiler) {
+void PropagatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
+    const VoxelTextures& t = out.textures;
     if (t.levels < 2) return;
     gl::GpuScope scope(profiler, "voxel/propagate");
     glUseProgram(mProgram.id());
@@ -20,7 +21,7 @@ void PropagatePass::execute(const Inputs& in, const VoxelTextures& t, gl::GpuPro
     glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, t.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
     const GLuint groups = GLuint((t.resolution / 2 + VOXEL_LOCAL_SIZE - 1) / VOXEL_LOCAL_SIZE);
     for (int level = 1; level < t.levels; ++level) {
-        in.setLevel(level);
+        glProgramUniform1i(mProgram.id(), LOC_VOXEL_LEVEL, level);
         glDispatchCompute(groups, groups, groups);
         // Consumer: the next level reads this one's results.
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -8,18 +8,21 @@
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 
-#include <functional>
-
 namespace gi::voxel {
 
 class PropagatePass {
 public:
     struct Inputs {
-        const gl::Buffer& voxelUniforms;
-        std::function<void(int level)> setLevel;   // writes VoxelUniforms::grid.z
+        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: placement, coverage mode
     };
+    struct Outputs {
+        // albedo (rgba16f, x coverage), normal (rgba8_snorm), irradiance (rgba16f, W/m^2 x
+        // coverage): each level L >= 1 is read from level L-1 and written in place.
+        const VoxelTextures& textures;
+    };
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    void execute(const Inputs& in, const VoxelTextures& textures, gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
     gl::ProgramRef mProgram;

@@ -12,22 +12,23 @@ bool RadiancePyramidPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void RadiancePyramidPass::execute(const Inputs& in, const VoxelTextures& t,
+void RadiancePyramidPass::execute(const Inputs& in, const Outputs& out,
         gl::GpuProfiler& profiler) {
+    const VoxelTextures& t = out.textures;
     gl::GpuScope scope(profiler, "voxel/pyramid");
     glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
-    glBindImageTexture(BIND_IMG_VOXEL_ALBEDO, t.albedo.id(), 0, GL_TRUE, 0, GL_READ_ONLY,
-            GL_RGBA16F);
-    glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, t.irradiance.id(), 0, GL_TRUE, 0, GL_READ_ONLY,
-            GL_RGBA16F);
+    glBindImageTexture(BIND_IMG_VOXEL_ALBEDO, in.cascade.albedo.id(), 0, GL_TRUE, 0,
+            GL_READ_ONLY, GL_RGBA16F);
+    glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, in.cascade.irradiance.id(), 0, GL_TRUE, 0,
+            GL_READ_ONLY, GL_RGBA16F);
     for (int mip = 0; mip < t.pyramidLevels(); ++mip) {
         // Mip 0 reads the cascade; the source binding is then unused but still valid.
         glBindImageTexture(BIND_IMG_VOXEL_PYRAMID_SOURCE, t.pyramid.id(), mip > 0 ? mip - 1 : 0,
                 GL_TRUE, 0, GL_READ_ONLY, GL_RGBA16F);
         glBindImageTexture(BIND_IMG_VOXEL_PYRAMID, t.pyramid.id(), mip, GL_TRUE, 0, GL_WRITE_ONLY,
                 GL_RGBA16F);
-        in.setLevel(mip);
+        glProgramUniform1i(mProgram.id(), LOC_VOXEL_LEVEL, mip);
         const int size = std::max(t.resolution / (2 << mip), 1);
         const GLuint groups = GLuint((size + VOXEL_LOCAL_SIZE - 1) / VOXEL_LOCAL_SIZE);
         glDispatchCompute(groups, groups, groups);

@@ -13,18 +13,22 @@
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 
-#include <functional>
-
 namespace gi::voxel {
 
 class RadiancePyramidPass {
 public:
     struct Inputs {
-        const gl::Buffer& voxelUniforms;
-        std::function<void(int mip)> setLevel;   // writes VoxelUniforms::grid.z
+        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: placement
+        // albedo (rgb x coverage, a = coverage) and irradiance (E x coverage, W/m^2) of the
+        // coarsest level, propagated
+        const VoxelTextures& cascade;
     };
+    struct Outputs {
+        const VoxelTextures& textures;     // pyramid, every mip written
+    };
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    void execute(const Inputs& in, const VoxelTextures& textures, gl::GpuProfiler& profiler);
+    void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
     gl::ProgramRef mProgram;

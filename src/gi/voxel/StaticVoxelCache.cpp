@@ -20,8 +20,6 @@ void StaticVoxelCache::save(const VoxelTextures& t) {
         mIrradiance = gl::createTexture3D(GL_RGBA16F, size, 1, "voxel/static/irradiance");
         mLock = gl::createTexture3D(GL_R32UI, size, 1, "voxel/static/lock");
     }
-    // Copies read what the voxelization's image stores wrote.
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
     copyVolume(t.albedo, mAlbedo, mResolution, mLevels);
     copyVolume(t.normal, mNormal, mResolution, mLevels);
     copyVolume(t.irradiance, mIrradiance, mResolution, mLevels);

@@ -12,26 +12,22 @@ bool VoxelDebugViewPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mProgram);
 }
 
-void VoxelDebugViewPass::execute(const gl::Buffer& frameUniforms, const gl::Buffer& voxelUniforms,
-        const VoxelTextures& textures, glm::ivec2 size, gl::GpuProfiler& profiler) {
-    if (size != mSize) {
-        mSize = size;
-        mImage = gl::createTexture2D(GL_RGBA32F, size, 1, "voxel/debug_view");
-        mFramebuffer = gl::createFramebuffer("voxel/debug_view");
-        glNamedFramebufferTexture(mFramebuffer.id(), GL_COLOR_ATTACHMENT0, mImage.id(), 0);
-    }
+void VoxelDebugViewPass::execute(const Inputs& in, const Outputs& out,
+        gl::GpuProfiler& profiler) {
+    mTarget.resize(out.size);
     gl::GpuScope scope(profiler, "voxel/debug_view");
-    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
-    glViewport(0, 0, size.x, size.y);
+    mTarget.bind();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glUseProgram(mProgram.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, frameUniforms.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, voxelUniforms.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, textures.albedo.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, textures.irradiance.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, textures.normal.id());
+    glProgramUniform1i(mProgram.id(), LOC_VOXEL_LEVEL, in.level);
+    glProgramUniform1i(mProgram.id(), LOC_VOXEL_DEBUG_VIEW, int(in.view));
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
+    glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.textures.albedo.id());
+    glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
+    glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.textures.normal.id());
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

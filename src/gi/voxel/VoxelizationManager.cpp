@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
 namespace gi::voxel {
 namespace {
@@ -74,7 +73,7 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
 }
 
 void VoxelizationManager::writeUniforms() {
-    shader::VoxelUniforms& u = mUniformData;
+    shader::VoxelUniforms u{};
     for (int level = 0; level < CascadeVolume::kMaxLevels; ++level) {
         const int l = std::min(level, mVolume.levels() - 1);
         u.levelOrigin[level] = glm::vec4(mVolume.origin(l), mVolume.voxelSize(l));
@@ -105,13 +104,6 @@ void VoxelizationManager::writeUniforms() {
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
-std::function<void(int)> VoxelizationManager::levelSetter() {
-    return [this](int level) {
-        mUniformData.grid.z = level;
-        glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
-    };
-}
-
 void VoxelizationManager::updateOccupancy(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     place(in);
     mShowDebug = false;
@@ -120,7 +112,7 @@ void VoxelizationManager::updateOccupancy(const GiFrameInputs& in, gl::GpuProfil
         return;
     }
     voxelize(in, profiler);
-    mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
+    mPropagate.execute({mUniforms}, {mTextures}, profiler);
     rememberContent(in, Content::Occupancy);
 }
 
@@ -209,39 +201,29 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
                                                                 : mSettings.resolution;
     const std::vector<LightView> views =
             injectionViews(in.lights, mVolume, mSceneBounds, injectResolution);
-    mInject.execute({in.scene, views, mUniforms,
-                            [this](const LightView& view) {
-                                mUniformData.viewProjection = view.viewProjection;
-                                mUniformData.lightIndex = glm::vec4(float(view.light), 0, 0, 0);
-                                mUniformData.injection.y = view.orthographic ? 1.0f : 0.0f;
-                                mUniformData.injection.z = view.footprint;
-                                mUniformData.injectionAxis = glm::vec4(view.axis, 0.0f);
-                                glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
-                            },
-                            injectResolution, mSettings.injectFragmentMean},
+    mInject.execute({in.scene, views, mUniforms, injectResolution, mSettings.injectFragmentMean},
             {mTextures}, profiler);
-
-    mPropagate.execute({mUniforms, levelSetter()}, mTextures, profiler);
-    mPyramid.execute({mUniforms, levelSetter()}, mTextures, profiler);
+    mPropagate.execute({mUniforms}, {mTextures}, profiler);
+    mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
 }
 
 void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
-    mTrace.resize(traceSize);
-    mTrace.execute({in.scene, in.frameUniforms, mUniforms, mTextures}, profiler);
+    mTrace.execute({in.scene, in.frameUniforms, mUniforms, mTextures}, {traceSize}, profiler);
     if (mSettings.filterRadius > 0) {
-        mFilter.execute(mTrace.indirect(), mTrace.size(), mUniforms, profiler);
+        mFilter.execute({mTrace.indirect(), mUniforms}, {mTrace.size()}, profiler);
     }
 
     mShowDebug = in.debugView != DebugView::None;
     if (mShowDebug) {
-        const int view = in.debugView == DebugView::VoxelAlbedo ? 0
-                         : in.debugView == DebugView::VoxelIrradiance ? 1 : 2;
-        mUniformData.grid.z = std::min(mSettings.debugLevel, mVolume.levels() - 1);
-        mUniformData.injection.w = float(view);
-        glNamedBufferSubData(mUniforms.id(), 0, sizeof mUniformData, &mUniformData);
-        mDebugView.execute(in.frameUniforms, mUniforms, mTextures, in.outputSize, profiler);
+        using View = VoxelDebugViewPass::View;
+        const View view = in.debugView == DebugView::VoxelAlbedo       ? View::Albedo
+                          : in.debugView == DebugView::VoxelIrradiance ? View::Irradiance
+                                                                       : View::Normal;
+        const int level = std::min(mSettings.debugLevel, mVolume.levels() - 1);
+        mDebugView.execute({in.frameUniforms, mUniforms, mTextures, level, view},
+                {in.outputSize}, profiler);
     }
 }
 

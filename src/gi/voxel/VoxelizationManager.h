@@ -51,6 +51,8 @@ public:
     const gl::Buffer& uniforms() const { return mUniforms; }
 
 private:
+    // Writes VoxelUniforms for this frame's placement and settings: the only write of the
+    // buffer; what changes between dispatches (level, light view) the passes set themselves.
     void writeUniforms();
     // What the voxel textures hold, and for which inputs.
     enum class Content { None, Occupancy, Lit };
@@ -63,7 +65,6 @@ private:
     void voxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler);
     void injectAndPropagate(const GiFrameInputs& in, gl::GpuProfiler& profiler);
     void trace(const GiFrameInputs& in, gl::GpuProfiler& profiler);
-    std::function<void(int)> levelSetter();
 
     VoxelSettings mSettings;
     bool mConfigured = false;
@@ -71,7 +72,6 @@ private:
     CascadeVolume mVolume;
     VoxelTextures mTextures;
     gl::Buffer mUniforms;
-    shader::VoxelUniforms mUniformData{};
     float mFinestExtent = 0.0f;
     bool mShowDebug = false;
 

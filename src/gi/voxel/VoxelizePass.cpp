@@ -37,8 +37,10 @@ void VoxelizePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    // Consumers: light injection (lock), propagation (images), cone tracing (textures).
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    // Consumers: light injection (lock), propagation (images), cone tracing (textures), the
+    // static cache's copies (StaticVoxelCache::save).
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+            GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 } // namespace gi::voxel

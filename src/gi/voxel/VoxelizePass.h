@@ -16,12 +16,14 @@ namespace gi::voxel {
 class VoxelizePass {
 public:
     struct Inputs {
-        const scene::GpuScene& scene;
-        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140
+        const scene::GpuScene& scene;      // world-space triangles (m), materials
+        const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: placement, raster area
         int rasterSize;                    // pixels per side: v x voxel.multiplier
-        scene::GpuScene::DrawSet draws = scene::GpuScene::DrawSet::All;
+        scene::GpuScene::DrawSet draws = scene::GpuScene::DrawSet::All;   // which instances
     };
     struct Outputs {
+        // albedo (rgba16f), normal (rgba8_snorm), irradiance.a (surface area in voxel face
+        // areas) and lock (r32ui) of every level, added to; cleared or restored by the caller
         const VoxelTextures& textures;
     };
 

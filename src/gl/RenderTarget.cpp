@@ -1,0 +1,69 @@
+#include "gl/RenderTarget.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace gi::gl {
+
+Texture createTargetTexture(const TargetTexture& spec, glm::ivec2 size) {
+    Texture texture = createTexture2D(spec.format, size, 1, spec.label);
+    if (spec.bilinear) {
+        glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    return texture;
+}
+
+bool attachFramebuffer(Framebuffer& framebuffer, const char* label,
+        std::initializer_list<const Texture*> colors, const Texture* depth, std::string& error) {
+    framebuffer = createFramebuffer(label);
+    std::vector<GLenum> drawBuffers;
+    for (const Texture* color : colors) {
+        const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(drawBuffers.size());
+        glNamedFramebufferTexture(framebuffer.id(), attachment, color->id(), 0);
+        drawBuffers.push_back(attachment);
+    }
+    if (depth) glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    if (drawBuffers.empty()) {
+        glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
+    } else {
+        glNamedFramebufferDrawBuffers(framebuffer.id(), GLsizei(drawBuffers.size()),
+                drawBuffers.data());
+    }
+    return framebufferComplete(framebuffer, label, error);
+}
+
+void RenderTarget::resize(glm::ivec2 size) {
+    size = glm::max(size, glm::ivec2(1));
+    if (size == mSize && mFramebuffer) return;
+    mSize = size;
+    mColor = mColorSpec.format != GL_NONE ? createTargetTexture(mColorSpec, size) : Texture();
+    mDepth = mDepthSpec.format != GL_NONE ? createTargetTexture(mDepthSpec, size) : Texture();
+    std::string error;
+    const bool complete = mColor
+            ? attachFramebuffer(mFramebuffer, mLabel, {&mColor}, mDepth ? &mDepth : nullptr, error)
+            : attachFramebuffer(mFramebuffer, mLabel, {}, mDepth ? &mDepth : nullptr, error);
+    if (!complete) std::fprintf(stderr, "%s\n", error.c_str());
+}
+
+void RenderTarget::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glViewport(0, 0, mSize.x, mSize.y);
+}
+
+void RenderTarget::clear() const {
+    if (mColor) {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
+    }
+    if (mDepth) {
+        const float clearDepth = 1.0f;
+        glDepthMask(GL_TRUE);
+        glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
+    }
+}
+
+} // namespace gi::gl
