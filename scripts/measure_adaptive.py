@@ -11,23 +11,17 @@ Usage: /usr/bin/python3 scripts/measure_adaptive.py [--bin build/voxatlas] [--sp
 About 8 minutes on 2 idle cores; progress goes to stderr.
 """
 import argparse
-import json
 import math
 import os
 import sys
-import tempfile
 import time
 
-import numpy
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import measure_atlas as shared  # noqa: E402  (run, progress, read_pfm, reference_mask, errors)
+import measure_common as common  # noqa: E402
 
-ROOT = shared.ROOT
-CORNELL = shared.CORNELL
-ANIMATED = os.path.join(ROOT, "assets", "cornell_box", "cornell_box_animated.gltf")
-SPONZA_CAMERA = shared.SPONZA_CAMERA
-IMAGES = shared.IMAGES
+CORNELL = common.CORNELL
+ANIMATED = os.path.join(common.ROOT, "assets", "cornell_box", "cornell_box_animated.gltf")
+SPONZA_CAMERA = common.SPONZA_CAMERA
 RESOLUTIONS = [16, 32, 64]
 REFERENCE_SPP = 256
 
@@ -35,15 +29,8 @@ REFERENCE_SPP = 256
 def frame_costs(scene, settings, frames, warmup, size, extra=()):
     """Mean ms per timed frame (all passes: sum of mean x samples / frames), the median
     frame's passes, and the memory report."""
-    with tempfile.TemporaryDirectory() as tmp:
-        timings = os.path.join(tmp, "t.json")
-        cmd = [shared.BIN, "render", scene, "--mode", "voxel",
-               "--out", os.path.join(tmp, "o.png"), "--width", str(size[0]),
-               "--height", str(size[1]), "--timings", timings,
-               "--set", f"render.frames={frames}", "--set", f"render.warmup={warmup}",
-               "--set", "material.specular=0"]
-        shared.run(cmd + shared.settings_args(settings) + list(extra))
-        report = json.load(open(timings))
+    report = common.render_timed(scene, {"material.specular": 0, **settings}, frames, warmup,
+                                 size, extra, mode="voxel").report
     passes = {p["name"]: p for p in report["passes"]}
     mean = sum(p["gpu_ms_mean"] * p["samples"] for p in passes.values()) / frames
     voxel_ms = sum(p["gpu_ms_mean"] * p["samples"] for n, p in passes.items()
@@ -54,14 +41,13 @@ def frame_costs(scene, settings, frames, warmup, size, extra=()):
 
 SKIPPABLE = ("voxel/clear", "voxel/voxelize", "voxel/inject", "voxel/finalize", "voxel/propagate",
              "voxel/pyramid")
-CASCADE = ("voxel/albedo", "voxel/normal", "voxel/irradiance", "voxel/helper", "voxel/lock",
-           "voxel/pyramid")
 
 
 def voxel_bytes(memory):
     """The cascade's textures (VoxelTextures): what the plan sizes. The trace targets scale
     with the output and are left out."""
-    return sum(v for k, v in memory.items() if k in CASCADE or k.startswith("voxel/static/"))
+    return common.voxel_cascade_bytes(memory) + sum(
+        v for k, v in memory.items() if k.startswith("voxel/static/"))
 
 
 def cascade_levels(memory, v):
@@ -83,7 +69,7 @@ def measure_caching(say, sponza):
     rows = []
     renderer = ""
     for name, scene, motion, extra, size, _ in cases:
-        shared.progress(f"(a) {name}, {motion}")
+        common.progress(f"(a) {name}, {motion}")
         # Interleaved rounds; each setting keeps its fastest round (others' load only adds).
         full, kept = None, None
         for _ in range(rounds):
@@ -112,7 +98,8 @@ def measure_caching(say, sponza):
     say("|---|---|---|---|---|---|---|---|")
     for name, motion, size, full, kept, voxelize, skippable in rows:
         say(f"| {name} | {motion} | {size[0]}x{size[1]} | {full['mean']:.1f} | {kept['mean']:.1f} "
-            f"| x{kept['mean'] / full['mean']:.2f} | {skippable:.1f} ({100 * skippable / full['mean']:.0f}%) "
+            f"| x{kept['mean'] / full['mean']:.2f} "
+            f"| {skippable:.1f} ({100 * skippable / full['mean']:.0f}%) "
             f"| {voxelize} of {frames} |")
     say("")
     say("'Passes caching can skip' are clear, voxelize, inject, finalize, propagate and pyramid in")
@@ -126,16 +113,9 @@ def measure_caching(say, sponza):
     return rows
 
 
-def render_indirect(scene, mode, settings, size, extra, timings=None, out_png=None):
-    with tempfile.TemporaryDirectory() as tmp:
-        pfm = os.path.join(tmp, "o.pfm")
-        cmd = [shared.BIN, "render", scene, "--mode", mode, "--output", "indirect",
-               "--out", out_png or os.path.join(tmp, "o.png"), "--hdr", pfm,
-               "--width", str(size[0]), "--height", str(size[1]), "--set", "material.specular=0"]
-        if timings:
-            cmd += ["--timings", timings]
-        shared.run(cmd + shared.settings_args(settings) + list(extra))
-        return shared.read_pfm(pfm)
+def render_indirect(scene, mode, settings, size, extra, timings=False):
+    return common.render_indirect(scene, mode, {"material.specular": 0, **settings}, size,
+                                  extra=extra, timings=timings)
 
 
 def measure_memory(say, sponza):
@@ -144,19 +124,17 @@ def measure_memory(say, sponza):
         scenes.append(("Sponza", sponza, (192, 108), ["--camera", SPONZA_CAMERA]))
     results, levels = {}, {}
     for name, scene, size, extra in scenes:
-        shared.progress(f"(b) {name}: reference")
+        common.progress(f"(b) {name}: reference")
         reference = render_indirect(scene, "reference", {"reference.spp": REFERENCE_SPP,
-                                                         "reference.bounces": 1}, size, extra)
-        mask = shared.reference_mask(reference)
+                                                         "reference.bounces": 1}, size, extra).image
+        mask = common.reference_mask(reference)
         for plan in ("fixed", "adaptive"):
             for v in RESOLUTIONS:
-                with tempfile.TemporaryDirectory() as tmp:
-                    t = os.path.join(tmp, "t.json")
-                    image = render_indirect(scene, "voxel", {"render.plan": plan,
-                                                             "voxel.resolution": v}, size, extra, t)
-                    report = json.load(open(t))["memory_bytes"]
+                voxel = render_indirect(scene, "voxel", {"render.plan": plan,
+                                                         "voxel.resolution": v}, size, extra, True)
+                report = voxel.report["memory_bytes"]
                 memory = voxel_bytes(report)
-                rmse, energy = shared.errors(image, reference, mask)
+                rmse, energy = common.errors(voxel.image, reference, mask)
                 results[name, plan, v] = (memory, rmse, energy)
                 levels[name, plan, v] = cascade_levels(report, v)
     say("## (b) Voxel memory: the adaptive plan against the thesis' fixed allocation\n")
@@ -171,7 +149,8 @@ def measure_memory(say, sponza):
     say("| scene | plan | v | levels | voxel memory | relative RMSE | energy ratio |")
     say("|---|---|---|---|---|---|---|")
     for (name, plan, v), (memory, rmse, energy) in results.items():
-        say(f"| {name} | {plan} | {v} | {levels[name, plan, v]} | {shared.mib(memory)} | {rmse:.3f} | {energy:.3f} |")
+        say(f"| {name} | {plan} | {v} | {levels[name, plan, v]} | {common.mib(memory)} "
+            f"| {rmse:.3f} | {energy:.3f} |")
     say("")
     say("Memory at equal error: the memory each plan needs to reach the error of the thesis'")
     say("default (fixed, v = 32), interpolated in log(memory) between the measured resolutions")
@@ -184,12 +163,13 @@ def measure_memory(say, sponza):
                 for plan in ("fixed", "adaptive")}
         ratio = (f"x{need['adaptive'] / need['fixed']:.2f}"
                  if need["adaptive"] and need["fixed"] else "-")
-        cell = {p: shared.mib(need[p]) if need[p] else "not reached" for p in need}
+        cell = {p: common.mib(need[p]) if need[p] else "not reached" for p in need}
         say(f"| {name} | {target:.3f} | {cell['fixed']} | {cell['adaptive']} | {ratio} |")
     say("")
     plot(results, scenes)
     summary(say, results, scenes)
-    say("![relative RMSE against voxel memory, fixed and adaptive plans](images/adaptive_memory.png)\n")
+    say("![relative RMSE against voxel memory, fixed and adaptive plans]"
+        "(images/adaptive_memory.png)\n")
     return results
 
 
@@ -201,9 +181,10 @@ def summary(say, results, scenes):
         best_fixed = min(fixed.values(), key=lambda r: r[1])
         best_adaptive = min(adaptive.values(), key=lambda r: r[1])
         say(f"{name}: the lowest error of the fixed cascade is {best_fixed[1]:.3f} at "
-            f"{shared.mib(best_fixed[0])}, of the adaptive plan {best_adaptive[1]:.3f} at "
-            f"{shared.mib(best_adaptive[0])}; at v = 32 the adaptive plan uses "
-            f"x{adaptive[32][0] / fixed[32][0]:.2f} the memory for x{adaptive[32][1] / fixed[32][1]:.2f} "
+            f"{common.mib(best_fixed[0])}, of the adaptive plan {best_adaptive[1]:.3f} at "
+            f"{common.mib(best_adaptive[0])}; at v = 32 the adaptive plan uses "
+            f"x{adaptive[32][0] / fixed[32][0]:.2f} the memory for "
+            f"x{adaptive[32][1] / fixed[32][1]:.2f} "
             "the error.\n")
     say("Where the error falls with memory (the Cornell box), the adaptive plan reaches the")
     say("thesis default's error with a fraction of its memory: the fixed cascade centres its")
@@ -217,7 +198,8 @@ def summary(say, results, scenes):
         say(f"{100 * min(energies):.0f}-{100 * max(energies):.0f}% of the reference's indirect "
             "energy at every resolution (as in the bench,")
         say("docs/results/), so the error is not the cascade's size and an equal-error comparison")
-        say(f"mostly measures noise; the adaptive plan spends up to x{extra:.2f} the memory there, on")
+        say(f"mostly measures noise; the adaptive plan spends up to x{extra:.2f} the memory "
+            "there, on")
         say("a fourth level that reaches the whole atrium from anywhere in it.")
     say("")
 
@@ -237,9 +219,7 @@ def memory_for_error(points, target):
 
 
 def plot(results, scenes):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = common.pyplot()
     fig, axes = plt.subplots(1, len(scenes), figsize=(5.5 * len(scenes), 4.2), squeeze=False)
     for ax, (name, *_) in zip(axes[0], scenes):
         for plan, style in (("fixed", "o--"), ("adaptive", "s-")):
@@ -256,19 +236,18 @@ def plot(results, scenes):
         ax.legend()
     fig.suptitle("Voxel GI error against memory: adaptive plan and the thesis' fixed cascade")
     fig.tight_layout()
-    fig.savefig(os.path.join(IMAGES, "adaptive_memory.png"), dpi=100)
+    fig.savefig(os.path.join(common.IMAGES, "adaptive_memory.png"), dpi=100)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--bin", default=shared.BIN)
-    parser.add_argument("--sponza", default=os.environ.get(
-        "VOXATLAS_SPONZA", os.path.join(ROOT, "..", "shared", "assets", "sponza", "Sponza.gltf")))
+    common.add_bin_argument(parser)
+    common.add_sponza_argument(parser)
     args = parser.parse_args()
-    shared.BIN = args.bin
+    common.use_binary(args.bin)
     sponza = args.sponza if os.path.exists(args.sponza) else None
     if not sponza:
-        shared.progress(f"Sponza not found at {args.sponza}: Cornell box only")
+        common.progress(f"Sponza not found at {args.sponza}: Cornell box only")
     lines = []
     say = lines.append
     start = time.time()
@@ -276,13 +255,13 @@ def main():
     measure_caching(body.append, sponza)
     measure_memory(body.append, sponza)
     say("# Modelling only what a scene requires: measured savings\n")
-    say("Produced by `/usr/bin/python3 scripts/measure_adaptive.py` (after `bash scripts/build.sh`)")
+    say("Produced by `/usr/bin/python3 scripts/measure_adaptive.py` "
+        "(after `bash scripts/build.sh`)")
     say(f"in {(time.time() - start) / 60:.1f} minutes on llvmpipe with 2 CPU cores. Timings are")
     say("ratios measured in the same run (setting against setting), not GPU figures.\n")
     lines += body
-    with open(os.path.join(ROOT, "docs", "results-adaptive.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    shared.progress("wrote docs/results-adaptive.md")
+    common.write_page("results-adaptive.md", lines)
+    common.progress("wrote docs/results-adaptive.md")
 
 
 if __name__ == "__main__":
