@@ -21,20 +21,16 @@ The output is deterministic: the same bytes on every run.
 """
 
 import argparse
-import base64
-import json
 import math
 import os
-import struct
 import sys
 
-GENERATOR = "voxatlas make_cornell_box.py"
+sys.dont_write_bytecode = True  # no module cache left beside the assets
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 
-# glTF enums.
-FLOAT = 5126
-UNSIGNED_SHORT = 5123
-ARRAY_BUFFER = 34962
-ELEMENT_ARRAY_BUFFER = 34963
+from gltf_builder import GltfWriter, MeshBuilder, mean, sub, write_atomically  # noqa: E402
+
+GENERATOR = "voxatlas make_cornell_box.py"
 
 # --------------------------------------------------------------------------
 # Cornell box data, millimetres, exactly as published (Cornell Box Data page).
@@ -89,8 +85,8 @@ CORNELL_LIGHT_DROP_MM = 10.0
 CORNELL_LIGHT_INTENSITY = 0.3
 
 
-def cornell_to_gltf(p):
-    """Cornell millimetres -> glTF metres.
+def cornell_to_gltf(p, scale=1.0):
+    """Cornell millimetres -> glTF metres (times `scale`).
 
     Mirroring z alone would give the camera its glTF -Z view direction but
     would also reflect the scene (red wall on the right).  Mirroring x as well
@@ -101,239 +97,27 @@ def cornell_to_gltf(p):
     """
     x, y, z = p
     # "+ 0.0" turns -0.0 (from z = 0) into 0.0 so the file never shows "-0.0".
-    return ((CORNELL_BOX_WIDTH_MM - x) / 1000.0, y / 1000.0, -z / 1000.0 + 0.0)
-
-
-# --------------------------------------------------------------------------
-# Small vector helpers.
-# --------------------------------------------------------------------------
-def sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-
-
-def dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def normalize(a):
-    n = math.sqrt(dot(a, a))
-    return (a[0] / n, a[1] / n, a[2] / n)
-
-
-def mean(points):
-    k = float(len(points))
-    return tuple(sum(p[i] for p in points) / k for i in range(3))
-
-
-def f32(v):
-    """The value v takes once stored as a 32-bit float (for accessor min/max)."""
-    return struct.unpack("<f", struct.pack("<f", v))[0]
-
-
-def triangle_normal(a, b, c):
-    return normalize(cross(sub(b, a), sub(c, a)))
-
-
-def newell_normal(poly):
-    """Area-weighted normal of a polygon (robust for slightly non-planar quads)."""
-    n = [0.0, 0.0, 0.0]
-    for i, cur in enumerate(poly):
-        nxt = poly[(i + 1) % len(poly)]
-        n[0] += (cur[1] - nxt[1]) * (cur[2] + nxt[2])
-        n[1] += (cur[2] - nxt[2]) * (cur[0] + nxt[0])
-        n[2] += (cur[0] - nxt[0]) * (cur[1] + nxt[1])
-    return normalize(tuple(n))
-
-
-# --------------------------------------------------------------------------
-# Mesh building.
-# --------------------------------------------------------------------------
-class MeshBuilder:
-    """Flat-shaded triangles: every face owns its vertices and one normal."""
-
-    def __init__(self):
-        self.positions = []
-        self.normals = []
-        self.indices = []
-
-    def add_quad(self, quad, facing):
-        """Add a quad whose front side faces along `facing` (a direction).
-
-        The quad is reordered so that it is counter-clockwise seen from that
-        side, then split along its 0-2 diagonal.  A planar quad shares four
-        vertices; a non-planar one (the Cornell red wall is off by ~3 mm) gets
-        two triangles with their own exact normals.
-        """
-        quad = list(quad)
-        if dot(newell_normal(quad), facing) < 0.0:
-            quad.reverse()
-        tris = [(quad[0], quad[1], quad[2]), (quad[0], quad[2], quad[3])]
-        normals = [triangle_normal(*t) for t in tris]
-        if max(abs(normals[0][i] - normals[1][i]) for i in range(3)) < 1e-9:
-            self._add_face(quad, normals[0], [(0, 1, 2), (0, 2, 3)])
-        else:
-            for tri, n in zip(tris, normals):
-                self._add_face(list(tri), n, [(0, 1, 2)])
-
-    def _add_face(self, verts, normal, local_tris):
-        base = len(self.positions)
-        self.positions.extend(verts)
-        self.normals.extend([normal] * len(verts))
-        for t in local_tris:
-            self.indices.extend(base + i for i in t)
-
-    @property
-    def triangle_count(self):
-        return len(self.indices) // 3
-
-
-class GltfWriter:
-    """Accumulates a glTF document with one embedded buffer."""
-
-    def __init__(self):
-        self.blob = bytearray()
-        self.doc = {
-            "asset": {"version": "2.0", "generator": GENERATOR},
-            "extensionsUsed": ["KHR_lights_punctual"],
-            "scene": 0,
-            "scenes": [],
-            "nodes": [],
-            "meshes": [],
-            "materials": [],
-            "cameras": [],
-            "accessors": [],
-            "bufferViews": [],
-            "buffers": [],
-            "extensions": {"KHR_lights_punctual": {"lights": []}},
-        }
-        self.material_index = {}
-        self.triangles = 0
-        self.bounds_min = [math.inf] * 3
-        self.bounds_max = [-math.inf] * 3
-
-    def _view(self, data, target):
-        # Every view starts on a 4-byte boundary, which covers the alignment
-        # that float (4) and uint16 (2) accessors need.
-        while len(self.blob) % 4:
-            self.blob.append(0)
-        view = {"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data)}
-        if target is not None:  # animation data is neither vertices nor indices
-            view["target"] = target
-        self.doc["bufferViews"].append(view)
-        self.blob.extend(data)
-        return len(self.doc["bufferViews"]) - 1
-
-    def _accessor(self, view, component_type, count, kind, extra=None):
-        acc = {"bufferView": view, "byteOffset": 0, "componentType": component_type,
-               "count": count, "type": kind}
-        if extra:
-            acc.update(extra)
-        self.doc["accessors"].append(acc)
-        return len(self.doc["accessors"]) - 1
-
-    def add_material(self, name, rgb):
-        self.material_index[name] = len(self.doc["materials"])
-        self.doc["materials"].append({
-            "name": name,
-            "pbrMetallicRoughness": {
-                "baseColorFactor": [rgb[0], rgb[1], rgb[2], 1.0],
-                "metallicFactor": 0.0,
-                "roughnessFactor": 1.0,
-            },
-        })
-
-    def add_mesh_node(self, name, mesh, material):
-        pos32 = [tuple(f32(c) for c in p) for p in mesh.positions]
-        lo = [min(p[i] for p in pos32) for i in range(3)]
-        hi = [max(p[i] for p in pos32) for i in range(3)]
-        for i in range(3):
-            self.bounds_min[i] = min(self.bounds_min[i], lo[i])
-            self.bounds_max[i] = max(self.bounds_max[i], hi[i])
-        n = len(mesh.positions)
-        pos_view = self._view(b"".join(struct.pack("<3f", *p) for p in mesh.positions), ARRAY_BUFFER)
-        nrm_view = self._view(b"".join(struct.pack("<3f", *v) for v in mesh.normals), ARRAY_BUFFER)
-        idx_view = self._view(struct.pack("<%dH" % len(mesh.indices), *mesh.indices), ELEMENT_ARRAY_BUFFER)
-        pos_acc = self._accessor(pos_view, FLOAT, n, "VEC3", {"min": lo, "max": hi})
-        nrm_acc = self._accessor(nrm_view, FLOAT, n, "VEC3")
-        idx_acc = self._accessor(idx_view, UNSIGNED_SHORT, len(mesh.indices), "SCALAR")
-        self.doc["meshes"].append({
-            "name": name,
-            "primitives": [{
-                "attributes": {"POSITION": pos_acc, "NORMAL": nrm_acc},
-                "indices": idx_acc,
-                "material": self.material_index[material],
-                "mode": 4,
-            }],
-        })
-        self.triangles += mesh.triangle_count
-        return self._node({"name": name, "mesh": len(self.doc["meshes"]) - 1})
-
-    def add_point_light_node(self, name, position, color, intensity):
-        lights = self.doc["extensions"]["KHR_lights_punctual"]["lights"]
-        lights.append({"name": name, "type": "point", "color": list(color), "intensity": intensity})
-        return self._node({"name": name, "translation": list(position),
-                           "extensions": {"KHR_lights_punctual": {"light": len(lights) - 1}}})
-
-    def add_camera_node(self, name, position, yfov, znear, zfar, rotation=None):
-        self.doc["cameras"].append({
-            "name": name,
-            "type": "perspective",
-            "perspective": {"yfov": yfov, "znear": znear, "zfar": zfar},
-        })
-        node = {"name": name, "camera": len(self.doc["cameras"]) - 1}
-        if rotation is not None:
-            node["rotation"] = list(rotation)
-        node["translation"] = list(position)
-        return self._node(node)
-
-    def add_animation(self, name, node, path, times, values, interpolation="LINEAR"):
-        """One channel moving `node`'s `path` through `values` (tuples) at `times` (s)."""
-        t_view = self._view(struct.pack("<%df" % len(times), *times), None)
-        t_acc = self._accessor(t_view, FLOAT, len(times), "SCALAR",
-                               {"min": [min(times)], "max": [max(times)]})
-        width = len(values[0])
-        flat = [c for v in values for c in v]
-        v_view = self._view(struct.pack("<%df" % len(flat), *flat), None)
-        v_acc = self._accessor(v_view, FLOAT, len(values), "VEC%d" % width)
-        self.doc.setdefault("animations", []).append({
-            "name": name,
-            "samplers": [{"input": t_acc, "output": v_acc, "interpolation": interpolation}],
-            "channels": [{"sampler": 0, "target": {"node": node, "path": path}}],
-        })
-
-    def _node(self, node):
-        self.doc["nodes"].append(node)
-        return len(self.doc["nodes"]) - 1
-
-    def finish(self, scene_name):
-        while len(self.blob) % 4:
-            self.blob.append(0)
-        self.doc["scenes"].append({"name": scene_name, "nodes": list(range(len(self.doc["nodes"])))})
-        self.doc["buffers"].append({
-            "byteLength": len(self.blob),
-            "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode("ascii"),
-        })
-        return (json.dumps(self.doc, indent=2) + "\n").encode("utf-8")
+    return ((CORNELL_BOX_WIDTH_MM - x) / 1000.0 * scale, y / 1000.0 * scale,
+            -z / 1000.0 * scale + 0.0)
 
 
 # --------------------------------------------------------------------------
 # Scenes.
 # --------------------------------------------------------------------------
-def build_cornell():
-    w = GltfWriter()
+def add_cornell_materials(w, double_sided=False):
     for name, rgb in CORNELL_MATERIALS:
-        w.add_material(name, rgb)
+        w.add_material(name, rgb, double_sided)
 
+
+def add_cornell_geometry(w, scale=1.0, texcoords=False):
+    """The five room quads and the two blocks, one mesh node each."""
     def conv(quad):
-        return [cornell_to_gltf(p) for p in quad]
+        return [cornell_to_gltf(p, scale) for p in quad]
 
     # Room surfaces face the inside of the box: towards the centre of its
     # bounding box.
-    room_centre = cornell_to_gltf((CORNELL_BOX_WIDTH_MM / 2.0, CORNELL_CEILING_Y_MM / 2.0, 559.2 / 2.0))
+    room_centre = cornell_to_gltf(
+        (CORNELL_BOX_WIDTH_MM / 2.0, CORNELL_CEILING_Y_MM / 2.0, 559.2 / 2.0), scale)
     room = [
         ("floor", CORNELL_FLOOR, "white"),
         ("ceiling", CORNELL_CEILING, "white"),
@@ -345,7 +129,7 @@ def build_cornell():
         q = conv(quad)
         m = MeshBuilder()
         m.add_quad(q, sub(room_centre, mean(q)))
-        w.add_mesh_node(name, m, material)
+        w.add_mesh_node(name, m, material, texcoords)
 
     # Block faces face away from the block's centre.  No bottom faces: they
     # rest on the floor and are never seen.
@@ -355,18 +139,31 @@ def build_cornell():
         m = MeshBuilder()
         for q in quads:
             m.add_quad(q, sub(mean(q), centre))
-        w.add_mesh_node(name, m, "white")
+        w.add_mesh_node(name, m, "white", texcoords)
 
-    lx, _, lz = cornell_to_gltf(mean(CORNELL_LIGHT))
-    light_pos = (round(lx, 6), round((CORNELL_CEILING_Y_MM - CORNELL_LIGHT_DROP_MM) / 1000.0, 6), round(lz, 6))
-    w.add_point_light_node("ceiling_light", light_pos, (1.0, 1.0, 1.0), CORNELL_LIGHT_INTENSITY)
 
+def cornell_light_position(scale=1.0, drop_mm=CORNELL_LIGHT_DROP_MM):
+    """Centre of the light opening, `drop_mm` (Cornell millimetres) under the ceiling."""
+    lx, _, lz = cornell_to_gltf(mean(CORNELL_LIGHT), scale)
+    return (round(lx, 6), round((CORNELL_CEILING_Y_MM - drop_mm) / 1000.0 * scale, 6), round(lz, 6))
+
+
+def add_cornell_camera(w, scale=1.0):
     # Published camera: 35 mm lens, 25 mm film -> yfov = 2 atan(12.5 / 35).
     # After the conversion it looks down -Z with +Y up, glTF's default
     # camera orientation, so the node needs no rotation.
-    cam_pos = tuple(round(c, 6) for c in cornell_to_gltf(CORNELL_CAMERA_MM))
+    cam_pos = tuple(round(c, 6) for c in cornell_to_gltf(CORNELL_CAMERA_MM, scale))
     yfov = 2.0 * math.atan(0.5 * CORNELL_FILM_HEIGHT_M / CORNELL_FOCAL_LENGTH_M)
-    w.add_camera_node("camera", cam_pos, yfov, 0.01, 10.0)
+    w.add_camera_node("camera", cam_pos, yfov, 0.01 * scale, 10.0 * scale)
+
+
+def build_cornell(generator=GENERATOR):
+    w = GltfWriter(generator)
+    add_cornell_materials(w)
+    add_cornell_geometry(w)
+    w.add_point_light_node("ceiling_light", cornell_light_position(), (1.0, 1.0, 1.0),
+                           CORNELL_LIGHT_INTENSITY)
+    add_cornell_camera(w)
     return w, "cornell_box"
 
 
@@ -380,7 +177,7 @@ PLANE_CAMERA_YFOV_DEG = 45.0
 
 
 def build_plane():
-    w = GltfWriter()
+    w = GltfWriter(GENERATOR)
     w.add_material("white", (PLANE_ALBEDO, PLANE_ALBEDO, PLANE_ALBEDO))
     s = PLANE_HALF_SIZE
     m = MeshBuilder()
@@ -452,19 +249,8 @@ def main(argv=None):
     writer, scene_name = build()
     data = writer.finish(scene_name)
 
-    # Write beside the target and rename, so a failed run never leaves a
-    # truncated file that looks like a good one.
-    out_dir = os.path.dirname(os.path.abspath(out))
-    os.makedirs(out_dir, exist_ok=True)
-    tmp = out + ".tmp"
-    with open(tmp, "wb") as f:
-        f.write(data)
-    os.replace(tmp, out)
-
-    lo = ", ".join("%.4f" % v for v in writer.bounds_min)
-    hi = ", ".join("%.4f" % v for v in writer.bounds_max)
-    print("%s: %d triangles, %d meshes, bounds min (%s) max (%s) m, %d bytes"
-          % (out, writer.triangles, len(writer.doc["meshes"]), lo, hi, len(data)))
+    write_atomically(out, data)
+    print(writer.summary(out, data))
     return 0
 
 
