@@ -123,6 +123,19 @@
 #define LOC_INJECT_FOOTPRINT        9   // float, one pixel of the light view: sr on the axis
                                         // (perspective) or m^2 (orthographic)
 #define LOC_INJECT_LIGHT            10  // int, index into GpuLight[] of the injected light
+#define LOC_PRESENT_EXPOSURE        11  // float, display exposure: 2^EV or the auto exposure
+#define LOC_PRESENT_CURVE           12  // int, TONE_CURVE_NONE or TONE_CURVE_FILMIC
+
+// Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
+#define TONE_CURVE_NONE             0   // clamp to [0, 1]
+#define TONE_CURVE_FILMIC           1   // ACES fitted (Narkowicz 2015), the constants below
+// f(x) = x (a x + b) / (x (c x + d) + e), clamped to [0, 1]: Krzysztof Narkowicz, "ACES
+// Filmic Tone Mapping Curve" (2015), a fit of the ACES reference rendering transform.
+#define TONE_ACES_A                 2.51
+#define TONE_ACES_B                 0.03
+#define TONE_ACES_C                 2.43
+#define TONE_ACES_D                 0.59
+#define TONE_ACES_E                 0.14
 
 #define LIGHT_POINT                 0
 #define LIGHT_SPOT                  1

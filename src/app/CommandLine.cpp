@@ -278,6 +278,31 @@ bool applySet(Config& config, const std::string&, const std::string& v, std::str
     return applySetting(config.settings, v, error);
 }
 
+bool applyExposure(Config& config, const std::string&, const std::string& v,
+        std::string& error) {
+    config.exposureGiven = true;
+    config.toneMapping.autoExposure = v == "auto";
+    if (config.toneMapping.autoExposure) return true;
+    if (!parseFloat(v, config.toneMapping.ev) ||
+            std::abs(config.toneMapping.ev) > core::kMaxExposureEv) {
+        error = "--exposure '" + v + "': expected auto or stops (EV) between -20 and 20";
+        return false;
+    }
+    return true;
+}
+
+bool applyToneCurve(Config& config, const std::string&, const std::string& v,
+        std::string& error) {
+    const std::optional<core::ToneCurve> curve = core::parseToneCurve(v);
+    if (!curve) {
+        error = "--tonemap '" + v + "': expected none or filmic";
+        return false;
+    }
+    config.toneMapping.curve = *curve;
+    config.toneCurveGiven = true;
+    return true;
+}
+
 bool applyMove(Config& config, const std::string&, const std::string& v, std::string& error) {
     if (!parseVec3(v, config.cameraMove) || glm::length(config.cameraMove) > 1e6f) {
         error = "--move '" + v + "': expected DX,DY,DZ in metres per frame";
@@ -363,6 +388,8 @@ constexpr OptionSpec kOptions[] = {
         {"--light", kRender | kView, true, applyLight},
         {"--gl", kRender | kBench, true, applyGl},
         {"--set", kRender | kView | kBench | kInfo, true, applySet},
+        {"--exposure", kRender | kView, true, applyExposure},
+        {"--tonemap", kRender | kView, true, applyToneCurve},
         {"--move", kRender, true, applyMove},
         {"--animate", kRender, true, applyAnimate},
         {"--time", kRender | kView, true, applyTime},
@@ -401,6 +428,11 @@ bool checkRequired(Config& config, std::string& error) {
         return false;
     }
     if (config.scenePath.empty()) config.scenePath = defaultScenePath();
+    if (command == Command::View) {
+        // The viewer's look; the headless fallback (a render) inherits it from here.
+        if (!config.exposureGiven) config.toneMapping.autoExposure = true;
+        if (!config.toneCurveGiven) config.toneMapping.curve = core::ToneCurve::Filmic;
+    }
     return true;
 }
 

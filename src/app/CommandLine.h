@@ -8,6 +8,7 @@
 #include "platform/GlContext.h"
 #include "render/OutputCatalog.h"
 #include "core/Settings.h"
+#include "core/ToneMap.h"
 #include "scene/Scene.h"
 
 #include <optional>
@@ -48,6 +49,10 @@ struct Config {
     platform::HeadlessProvider gl = platform::HeadlessProvider::Egl;
     bool glExplicit = false;                 // --gl given: no silent fallback
     Settings settings;
+    // --exposure, --tonemap: render defaults to exposure 0 and no curve (linear PNGs), view
+    // to auto exposure and the filmic curve; the flags say what was given.
+    core::ToneMapping toneMapping;
+    bool exposureGiven = false, toneCurveGiven = false;
     // view
     int frames = 0;                          // 0 = interactive
     float animationTime = 0.0f;              // --time: seconds into the scene's animations

@@ -10,10 +10,12 @@
 #include "reference/ProgressBar.h"
 #include "reference/ReferenceCache.h"
 #include "core/ImageIO.h"
+#include "core/ToneMap.h"
 #include "scene/Animation.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -26,16 +28,35 @@ int fail(int status, const std::string& message) {
     return status;
 }
 
-// Writes --out, --hdr and --timings (the report is only built when asked for); on failure
-// removes what it had written, so a failed render leaves no partial output.
+// What --out holds: `image` at the exposure and through the curve of --exposure and
+// --tonemap (core/ToneMap.h). The defaults leave it linear at exposure 1, untouched.
+core::Image displayImage(const Config& config, const core::Image& image,
+        const std::vector<float>& coverage) {
+    const core::ToneMapping& mapping = config.toneMapping;
+    if (!mapping.autoExposure && mapping.ev == 0.0f && mapping.curve == core::ToneCurve::None) {
+        return image;
+    }
+    const float exposure = core::exposureFor(mapping, image, coverage);
+    if (mapping.autoExposure) {
+        std::fprintf(stderr, "voxatlas render: auto exposure %+.2f EV\n", std::log2(exposure));
+    }
+    return core::applyToneMapping(image, exposure, mapping.curve);
+}
+
+// Writes --out (tone mapped), --hdr (linear radiance) and --timings (the report is only built
+// when asked for); on failure removes what it had written, so a failed render leaves no
+// partial output.
 bool writeOutputs(const Config& config, const core::Image& image,
-        const std::function<TimingsReport()>& timings, std::string& error) {
+        const std::vector<float>& coverage, const std::function<TimingsReport()>& timings,
+        std::string& error) {
     std::vector<std::string> written;
     auto cleanUp = [&] {
         for (const std::string& path : written) std::filesystem::remove(path);
         return false;
     };
-    if (!core::writePng(config.outPath, image, error)) return cleanUp();
+    if (!core::writePng(config.outPath, displayImage(config, image, coverage), error)) {
+        return cleanUp();
+    }
     written.push_back(config.outPath);
     if (!config.hdrPath.empty()) {
         if (!core::writeHdr(config.hdrPath, image, error)) return cleanUp();
@@ -73,7 +94,7 @@ int runReference(const Config& config, const scene::Scene& scene, const scene::C
                 "cpu", "embree", "wall-clock", width, height, 1,
                 {{"reference/path_trace", ms, ms, ms, 1}}, {}};
     };
-    if (!writeOutputs(config, image, timings, error)) return fail(1, error);
+    if (!writeOutputs(config, image, {}, timings, error)) return fail(1, error);
     std::fprintf(stderr,
             "voxatlas render: wrote %s (%dx%d, reference, %d spp, %d bounce(s), %s, noise %.2f%% "
             "final / %.2f%% indirect)\n",
@@ -158,7 +179,11 @@ int runRender(const Config& config) {
                 profiler.mode() == gl::TimingMode::Finish ? "finish" : "queries", width, height,
                 config.settings.frames, profiler.timings(), renderer.memory()};
     };
-    if (!writeOutputs(config, image, timings, error)) return fail(1, error);
+    // Auto exposure meters the pixels that show geometry, not the empty background.
+    const std::vector<float> coverage = config.toneMapping.autoExposure
+                                                ? renderer.readbackCoverage()
+                                                : std::vector<float>{};
+    if (!writeOutputs(config, image, coverage, timings, error)) return fail(1, error);
     std::fprintf(stderr, "voxatlas render: wrote %s (%dx%d, %s, %s)\n", config.outPath.c_str(),
             width, height, render::giModeName(config.mode), std::string(context->provider()).c_str());
     return 0;

@@ -150,6 +150,7 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
         ImGui::Text("mode %s   output %s   %dx%d   vsync %s", frame.mode.c_str(),
                 frame.output.c_str(), frame.framebufferSize.x, frame.framebufferSize.y,
                 frame.vsync ? "on" : "off");
+        ImGui::Text("exposure %s", frame.exposure.c_str());
         if (!frame.giStatus.empty()) ImGui::TextUnformatted(frame.giStatus.c_str());
         const double fps = frame.frameMs > 0.0 ? 1000.0 / frame.frameMs : 0.0;
         char overlay[64];

@@ -37,6 +37,7 @@ struct UiFrame {
     std::string giStatus;                          // GiTechnique::status(), may be empty
     std::string plan;                              // render::describePlan() of the renderer
     std::string output;                            // "final", "direct", "indirect"
+    std::string exposure;                          // ViewerExposure::label()
     std::string camera;                            // e.g. "1/2 Camera" or "free"
     std::size_t triangles = 0;
     glm::ivec2 framebufferSize{0};                 // pixels

@@ -63,10 +63,16 @@ std::string usage(Command command) {
                "                            timings of a moving camera)\n"
                "        [--animate SECONDS] (the scene's animations play this long each frame, from\n"
                "                            --time: timings of animated objects)\n"
+               "        [--exposure auto|EV] [--tonemap none|filmic] (PNG only; default 0, none)\n"
                "\n"
                "Renders one frame without a display (EGL surfaceless; OSMesa if EGL is missing\n"
                "and --gl was not given) to an sRGB PNG and optionally a linear HDR image.\n"
                "Defaults: 512x512, camera 0 of the scene, --mode direct, --output final.\n"
+               "\n"
+               "--exposure EV multiplies radiance by 2^EV (-20..20) before the PNG is encoded;\n"
+               "--exposure auto: 0.18 / the log-average luminance of the pixels showing geometry.\n"
+               "--tonemap filmic: the ACES fit of Narkowicz (2015) after the exposure. The\n"
+               "defaults keep the PNG linear at exposure 1; the HDR image is always linear.\n"
                "\n"
                "--light point:x,y,z:r,g,b:intensity\n"
                "        spot:x,y,z:dx,dy,dz:r,g,b:intensity[:inner_deg,outer_deg]\n"
@@ -101,12 +107,14 @@ std::string usage(Command command) {
     default:
         return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"
-               "        [--keys \"FRAME:KEY,...\"] [--set key=value ...]\n"
+               "        [--keys \"FRAME:KEY,...\"] [--exposure auto|EV] [--tonemap none|filmic]\n"
+               "        [--set key=value ...]\n"
                "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
                "       voxatlas bench [--scene ...] [--sweep smoke|quick|full] [--out-dir DIR]\n"
                "       voxatlas info SCENE [--set key=value ...]\n"
                "SCENE defaults to the Cornell box; --mode picks the GI mode the viewer starts in\n"
-               "(keys 1-3 switch). Without a display, view renders a headless screenshot instead.\n";
+               "(keys 1-3 switch). Without a display, view renders a headless screenshot instead.\n"
+               "The viewer starts at --exposure auto --tonemap filmic (keys - = X T change them).\n";
     }
 }
 

@@ -1,10 +1,11 @@
 #include "app/Viewer.h"
 
 #include "app/FlyCamera.h"
-#include "app/RenderCommand.h"
+#include "app/HeadlessView.h"
 #include "app/SceneSetup.h"
 #include "app/SettingHotkeys.h"
 #include "app/Ui.h"
+#include "app/ViewerExposure.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Limits.h"
 #include "gl/ShaderLibrary.h"
@@ -33,7 +34,6 @@ constexpr int kDefaultWidth = 1280;
 constexpr int kDefaultHeight = 720;
 constexpr double kNoticeSeconds = 6.0;
 constexpr float kMaxStepSeconds = 0.1f;   // a stalled frame does not fling the camera away
-constexpr const char* kHeadlessScreenshot = "voxatlas-view.png";
 
 void say(const std::string& message) {
     std::fprintf(stderr, "voxatlas view: %s\n", message.c_str());
@@ -97,6 +97,8 @@ private:
     void reloadShaders();
     FlyInput readInput();
     UiFrame uiFrame(double frameMs) const;
+    // The last frame as the window shows it (exposure and curve), for screenshots.
+    core::Image shownFrame() const;
     bool writeScreenshot(const core::Image& image, const std::string& path);
     void notify(const std::string& message);
     std::string cameraLabel() const;
@@ -115,6 +117,7 @@ private:
 
     Settings mSettings;
     FlyCamera mCamera;
+    ViewerExposure mExposure;
     int mCameraIndex = 0;                     // scene camera; -1 = the --camera spec
     double mAnimationTime = 0.0;              // seconds of the scene's animations played
     bool mAnimationPaused = false;
@@ -133,7 +136,7 @@ private:
 Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
         std::unique_ptr<platform::GlfwWindow> window, const scene::CameraView& camera)
     : mConfig(config), mScene(std::move(scene)), mWindow(std::move(window)),
-      mSettings(config.settings), mCamera(camera, mScene->bounds),
+      mSettings(config.settings), mCamera(camera, mScene->bounds), mExposure(config.toneMapping),
       mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex),
       mAnimationTime(config.animationTime) {
     mHotkeys.push_back({"H", "show / hide this help", [this] { mUi.toggleHelp(); }});
@@ -153,6 +156,10 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
             const float reach = coarsestReach();
             changeSetting([&](Settings& s) { hotkey.step(s, reach); }, hotkey.setting);
         }});
+    }
+    for (const ViewerExposure::Hotkey& key : ViewerExposure::hotkeys()) {
+        mHotkeys.push_back(
+                {key.key, key.help, [this, &key] { notify((mExposure.*key.action)()); }});
     }
     mHotkeys.push_back({"C", "next scene camera", [this] { nextCamera(); }});
     mHotkeys.push_back({"V", "vsync on / off", [this] {
@@ -303,6 +310,7 @@ UiFrame Viewer::uiFrame(double frameMs) const {
     if (const GiTechnique* technique = mRenderer.technique()) frame.giStatus = technique->status();
     frame.plan = render::describePlan(mRenderer.plan());
     frame.output = render::outputComponentName(mOutput);
+    frame.exposure = mExposure.label();
     frame.camera = cameraLabel();
     frame.triangles = mScene->triangleCount();
     frame.framebufferSize = mWindow->framebufferSize();
@@ -313,6 +321,11 @@ UiFrame Viewer::uiFrame(double frameMs) const {
     if (age < kNoticeSeconds) frame.notice = mNotice;
     frame.shaderErrors = mShaderErrors;
     return frame;
+}
+
+core::Image Viewer::shownFrame() const {
+    const core::Image image = mRenderer.readback();
+    return render::isRadiometric(mOutput) ? mExposure.shown(image) : image;
 }
 
 bool Viewer::writeScreenshot(const core::Image& image, const std::string& path) {
@@ -402,14 +415,21 @@ int Viewer::run() {
             continue;
         }
         mRenderer.render(mCamera.view(float(size.x) / float(size.y)), size, mOutput, mProfiler);
-        mPresent.execute({mRenderer.radiance(), mRenderer.radianceScale()}, {size}, mProfiler);
+        // Debug views (albedo, normals, ...) are shown as they are; radiance is exposed.
+        const bool exposed = render::isRadiometric(mOutput);
+        // Scripted runs adapt by a fixed 1/30 s a frame, as they animate, so screenshots repeat.
+        if (exposed) mExposure.meter(mRenderer, mConfig.frames > 0 ? 1.0 / 30.0 : seconds);
+        mPresent.execute({mRenderer.radiance(), mRenderer.radianceScale(),
+                                 exposed ? mExposure.exposure() : 1.0f,
+                                 exposed ? mExposure.curve() : core::ToneCurve::None},
+                {size}, mProfiler);
         rendered = true;
         // Screenshots are taken before the overlay is drawn (view.screenshot_ui aside).
         if (mScreenshotRequested) {
             mScreenshotRequested = false;
             const std::string path =
                     mConfig.screenshotPath.empty() ? nextScreenshotPath() : mConfig.screenshotPath;
-            (void)writeScreenshot(mRenderer.readback(), path);
+            (void)writeScreenshot(shownFrame(), path);
         }
         drawOverlay(seconds);
         const bool lastFrame = mConfig.frames > 0 && frame + 1 == mConfig.frames;
@@ -429,7 +449,7 @@ int Viewer::run() {
             return fail(1, "no frame was rendered, so " + mConfig.screenshotPath +
                     " was not written");
         }
-        if (!writeScreenshot(mRenderer.readback(), mConfig.screenshotPath)) return 1;
+        if (!writeScreenshot(shownFrame(), mConfig.screenshotPath)) return 1;
     }
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
         return fail(1, gl::glErrorName(glError) + " during the session");
@@ -470,18 +490,7 @@ int runViewer(const Config& config) {
     if (!window) {
         if (failure != platform::WindowFailure::NoDisplay) return fail(1, error);
         scene.reset();
-        Config headless = config;
-        headless.command = Command::Render;
-        headless.outPath =
-                config.screenshotPath.empty() ? kHeadlessScreenshot : config.screenshotPath;
-        headless.width = width;
-        headless.height = height;
-        const std::string prefix = "no display: ";
-        const std::string reason =
-                error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error;
-        say("no display (" + reason + "); rendering a headless screenshot instead: " +
-                std::filesystem::absolute(headless.outPath).lexically_normal().string());
-        return runRender(headless);
+        return runHeadlessView(config, {width, height}, error);
     }
     Viewer viewer(config, std::move(scene), std::move(window), camera);
     return viewer.run();

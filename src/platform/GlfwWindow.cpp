@@ -46,7 +46,8 @@ constexpr std::array kNamedKeys = {
     NamedKey{GLFW_KEY_ENTER, "ENTER"}, NamedKey{GLFW_KEY_TAB, "TAB"},
     NamedKey{GLFW_KEY_BACKSPACE, "BACKSPACE"}, NamedKey{GLFW_KEY_UP, "UP"},
     NamedKey{GLFW_KEY_DOWN, "DOWN"}, NamedKey{GLFW_KEY_LEFT, "LEFT"},
-    NamedKey{GLFW_KEY_RIGHT, "RIGHT"},
+    NamedKey{GLFW_KEY_RIGHT, "RIGHT"}, NamedKey{GLFW_KEY_MINUS, "-"},
+    NamedKey{GLFW_KEY_EQUAL, "="},
 };
 
 } // namespace

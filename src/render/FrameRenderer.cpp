@@ -187,11 +187,16 @@ float FrameRenderer::radianceScale() const {
     return isRadiometric(mLastOutput) ? 1.0f / mScene->exposure() : 1.0f;
 }
 
-core::Image FrameRenderer::readback() const {
-    core::Image full(mRenderSize.x, mRenderSize.y);
+std::vector<float> FrameRenderer::readTarget() const {
     std::vector<float> rgba(std::size_t(mRenderSize.x) * std::size_t(mRenderSize.y) * 4);
     glGetTextureImage(mTarget.color().id(), 0, GL_RGBA, GL_FLOAT,
             GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    return rgba;
+}
+
+core::Image FrameRenderer::readback() const {
+    core::Image full(mRenderSize.x, mRenderSize.y);
+    const std::vector<float> rgba = readTarget();
     // GL rows run bottom to top; images run top to bottom.
     const float scale = radianceScale();
     for (int y = 0; y < mRenderSize.y; ++y) {
@@ -201,6 +206,19 @@ core::Image FrameRenderer::readback() const {
         }
     }
     return boxDownsample(full, mSettings.supersample);
+}
+
+std::vector<float> FrameRenderer::readbackCoverage() const {
+    core::Image full(mRenderSize.x, mRenderSize.y);
+    const std::vector<float> rgba = readTarget();
+    for (int y = 0; y < mRenderSize.y; ++y) {
+        const float* row = rgba.data() + std::size_t(mRenderSize.y - 1 - y) * std::size_t(mRenderSize.x) * 4;
+        for (int x = 0; x < mRenderSize.x; ++x) full.set(x, y, glm::vec3(row[x * 4 + 3]));
+    }
+    const core::Image averaged = boxDownsample(full, mSettings.supersample);
+    std::vector<float> coverage(std::size_t(averaged.width) * std::size_t(averaged.height));
+    for (std::size_t i = 0; i < coverage.size(); ++i) coverage[i] = averaged.rgb[i * 3];
+    return coverage;
 }
 
 std::vector<gl::MemoryItem> FrameRenderer::memory() const {

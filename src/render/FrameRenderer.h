@@ -59,6 +59,9 @@ public:
     // The last frame as linear radiance, box-averaged down to the output size, with the
     // pre-exposure (scene/Exposure.h) divided out.
     [[nodiscard]] core::Image readback() const;
+    // The last frame's geometry coverage (its alpha), averaged the same way: one value in
+    // [0, 1] per output pixel, rows top to bottom. What auto exposure meters.
+    [[nodiscard]] std::vector<float> readbackCoverage() const;
 
     // RGBA32F linear radiance of the last frame times radianceScale()^-1 (alpha = geometry
     // coverage), render size: multiply by radianceScale() for W/(m^2 sr).
@@ -75,6 +78,8 @@ public:
     const GiTechnique* technique() const { return mGi.get(); }
 
 private:
+    // The colour target's RGBA32F texels, GL rows (bottom to top).
+    std::vector<float> readTarget() const;
     // The camera's FrameUniforms for this frame: the only write of the buffer per frame.
     void writeFrameUniforms(const scene::CameraView& camera, OutputComponent output);
     std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);

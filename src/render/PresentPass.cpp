@@ -34,6 +34,9 @@ void PresentPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
 
     glUseProgram(mProgram.id());
     glProgramUniform1f(mProgram.id(), LOC_PRESENT_SCALE, in.scale);
+    glProgramUniform1f(mProgram.id(), LOC_PRESENT_EXPOSURE, in.exposure);
+    glProgramUniform1i(mProgram.id(), LOC_PRESENT_CURVE,
+            in.curve == core::ToneCurve::Filmic ? TONE_CURVE_FILMIC : TONE_CURVE_NONE);
     glBindTextureUnit(BIND_TEX_PRESENT_SOURCE, in.radiance.id());
     glBindSampler(BIND_TEX_PRESENT_SOURCE, mBilinear.id());
     glBindVertexArray(mEmpty.id());

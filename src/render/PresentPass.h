@@ -1,7 +1,8 @@
 // Shows a frame in the viewer's window: the FrameRenderer's linear-radiance texture drawn over
-// the whole default framebuffer with one full-screen triangle, exposure 1, clamped and
-// sRGB-encoded in the shader (the same mapping as PNG outputs, DESIGN.md), sampled bilinearly
-// when the render size differs from the window's (render.supersample > 1).
+// the whole default framebuffer with one full-screen triangle, times the exposure, through the
+// tone curve and sRGB-encoded in the shader (core/ToneMap.h's mapping, in
+// shaders/common/tonemap.glsl), sampled bilinearly when the render size differs from the
+// window's (render.supersample > 1).
 // Inputs : radiance, RGBA32F linear radiance W/(m^2 sr) divided by `scale`, any size.
 // Outputs: the default framebuffer (0), RGBA8 sRGB-encoded values, alpha 1.
 #pragma once
@@ -10,6 +11,7 @@
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
 #include "core/Image.h"
+#include "core/ToneMap.h"
 
 #include <glm/glm.hpp>
 
@@ -22,6 +24,8 @@ public:
     struct Inputs {
         const gl::Texture& radiance;    // RGBA32F, linear radiance / scale
         float scale = 1.0f;             // FrameRenderer::radianceScale()
+        float exposure = 1.0f;          // display multiplier, 2^EV
+        core::ToneCurve curve = core::ToneCurve::None;
     };
     struct Outputs {
         glm::ivec2 framebufferSize;     // pixels of the default framebuffer

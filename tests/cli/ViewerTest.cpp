@@ -100,8 +100,10 @@ TEST_F(ViewerTest, ScriptedRunWritesScreenshotOfWindowSize) {
 
 TEST_F(ViewerTest, ScreenshotMatchesHeadlessRender) {
     const std::string dir = makeTempDir("view-vs-render");
+    // The viewer's own look is auto exposure and a filmic curve; at exposure 0 and no curve
+    // it shows the linear image `render` writes by default.
     const ProcessResult view = runView(dir, {kCornell, "--frames", "2", "--screenshot", "v.png",
-            "--width", "160", "--height", "120"});
+            "--width", "160", "--height", "120", "--exposure", "0", "--tonemap", "none"});
     ASSERT_EQ(view.exitCode, 0) << view.err;
     const ProcessResult render = runVoxatlas({"render", kCornell, "--out", dir + "/r.png",
             "--width", "160", "--height", "120"}, kTimeoutSeconds);
@@ -131,12 +133,14 @@ TEST_F(ViewerTest, InjectedHotkeysRun) {
 // out of the user's cache); the indirect light brightens the frame.
 TEST_F(ViewerTest, ModeKeysSwitchOrExplain) {
     const std::string dir = makeTempDir("view-modes");
+    // Fixed exposure: auto exposure would bring both frames to the same brightness.
     const ProcessResult direct = runView(dir, {kCornell, "--frames", "2", "--width", "64",
-            "--height", "64", "--screenshot", "direct.png"});
+            "--height", "64", "--screenshot", "direct.png", "--exposure", "0", "--tonemap", "none"});
     ASSERT_EQ(direct.exitCode, 0) << direct.err;
     const ProcessResult r = runView(dir, {kCornell, "--frames", "3", "--width", "64",
             "--height", "64", "--keys", "0:2,1:3", "--screenshot", "s.png", "--set",
-            "atlas.resolution=256", "--set", "atlas.cache=0"});
+            "atlas.resolution=256", "--set", "atlas.cache=0", "--exposure", "0", "--tonemap",
+            "none"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("is not available"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("atlas: 15 charts"), std::string::npos) << "key 3 builds the atlas: " << r.err;
@@ -148,6 +152,34 @@ TEST_F(ViewerTest, ModeKeysSwitchOrExplain) {
     for (float value : withGi.rgb) sumGi += value;
     for (float value : withoutGi.rgb) sumDirect += value;
     EXPECT_GT(sumGi, sumDirect * 1.02) << "atlas GI adds indirect light to the frame";
+    fs::remove_all(dir);
+}
+
+// Two presses of = raise the exposure by one stop; - lowers it; X and T toggle auto exposure
+// and the curve without failing.
+TEST_F(ViewerTest, ExposureKeysStepTheExposure) {
+    const std::string dir = makeTempDir("view-exposure");
+    const std::vector<std::string> base = {kCornell, "--frames", "3", "--width", "64",
+            "--height", "64", "--exposure", "-1", "--tonemap", "none"};
+    auto shot = [&](const std::string& keys, const std::string& name) {
+        std::vector<std::string> args = base;
+        for (const char* arg : {"--keys", keys.c_str(), "--screenshot", name.c_str()}) {
+            args.push_back(arg);
+        }
+        const ProcessResult r = runView(dir, args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        core::Image image;
+        std::string error;
+        EXPECT_TRUE(core::readPng(dir + "/" + name, image, error)) << error;
+        return image;
+    };
+    const core::Image plain = shot("0:T,1:T", "plain.png");
+    const core::Image brighter = shot("1:=,1:=", "brighter.png");
+    const core::Image darker = shot("1:-,1:-", "darker.png");
+    const core::Image toggled = shot("1:X,2:X", "toggled.png");
+    EXPECT_GT(meanEncoded(brighter), meanEncoded(plain) * 1.1f);
+    EXPECT_LT(meanEncoded(darker), meanEncoded(plain) * 0.9f);
+    EXPECT_GT(meanEncoded(toggled), 0.0f);
     fs::remove_all(dir);
 }
 
