@@ -1,13 +1,8 @@
 // The one-plane voxel test both the cone trace and the atlas' voxel visibility use
 // (shaders/common/voxel_plane.glsl), run on the GPU over hand-made voxels and segments.
+#include "ComputeProbe.h"
 #include "GpuTest.h"
 
-#include "gl/Objects.h"
-#include "gl/ShaderLibrary.h"
-
-#include <glad/gl.h>
-
-#include <filesystem>
 #include <vector>
 
 namespace gi::test {
@@ -36,25 +31,10 @@ PlaneCase floorVoxel(float offset, glm::vec3 a, glm::vec3 b, float tolerance = k
 class VoxelPlaneGpuTest : public GpuTest {
 protected:
     std::vector<PlaneResult> run(const std::vector<PlaneCase>& cases) {
-        // Rooted at the source tree, so the probe includes the project's own file.
-        gl::ShaderLibrary library(std::filesystem::path(sourcePath("shaders")).parent_path());
         std::string error;
-        const gl::ProgramRef program = library.build({"test/voxel_plane_probe",
-                {{GL_COMPUTE_SHADER, "tests/gpu/shaders/voxel_plane_probe.comp"}}, {}}, error);
-        EXPECT_TRUE(program) << error;
-        if (!program) return {};
-        const gl::Buffer input = gl::createBuffer(cases.size() * sizeof(PlaneCase), cases.data(),
-                0, "test/plane-cases");
-        const gl::Buffer output = gl::createBuffer(cases.size() * sizeof(glm::ivec4), nullptr,
-                0, "test/plane-results");
-        glUseProgram(program.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
-        glDispatchCompute(GLuint(cases.size()), 1, 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        std::vector<glm::ivec4> raw(cases.size());
-        glGetNamedBufferSubData(output.id(), 0, GLsizeiptr(raw.size() * sizeof(glm::ivec4)),
-                raw.data());
+        const std::vector<glm::ivec4> raw = runComputeProbe<glm::ivec4>(
+                "tests/gpu/shaders/voxel_plane_probe.comp", cases, error);
+        EXPECT_EQ(raw.size(), cases.size()) << error;
         std::vector<PlaneResult> results;
         for (const glm::ivec4& r : raw) results.push_back({r.x != 0, r.y != 0, r.z != 0});
         return results;
