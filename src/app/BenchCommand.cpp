@@ -1,6 +1,8 @@
 #include "app/BenchCommand.h"
 
+#include "app/BenchCommon.h"
 #include "app/SceneSetup.h"
+#include "app/SuiteCommand.h"
 #include "bench/BenchReport.h"
 #include "bench/BenchRunner.h"
 #include "bench/BenchSweep.h"
@@ -9,10 +11,7 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -29,53 +28,6 @@ constexpr const char* kPython = "/usr/bin/python3";
 int fail(int status, const std::string& message) {
     std::fprintf(stderr, "voxatlas bench: %s\n", message.c_str());
     return status;
-}
-
-struct SceneChoice {
-    std::string path;
-    bool explicitPath = false;   // from --scene: a missing file is bad input, not a skip
-};
-
-// The second scene: --scene, else $VOXATLAS_SPONZA, else the shared Sponza next to the
-// source tree.
-SceneChoice secondScene(const Config& config) {
-    if (config.sceneGiven) return {config.scenePath, true};
-    const char* env = std::getenv("VOXATLAS_SPONZA");
-    if (env && *env) return {env, false};
-    const fs::path shared = fs::path(dataDirectory()) / "../shared/assets/sponza/Sponza.gltf";
-    return {shared.lexically_normal().string(), false};
-}
-
-bool isSponza(const std::string& path) {
-    std::string stem = fs::path(path).stem().string();
-    for (char& c : stem) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return stem == "sponza";
-}
-
-// The scene path as reports show it: relative to the source tree when it is inside it or next
-// to it (assets/..., ../shared/...), so committed tables hold no machine-specific paths.
-std::string displayPath(const std::string& path) {
-    std::error_code ec;
-    const fs::path relative = fs::relative(path, dataDirectory(), ec);
-    if (ec || relative.empty()) return path;
-    int parents = 0;
-    for (const fs::path& part : relative) parents += part == "..";
-    return parents <= 1 ? relative.string() : path;
-}
-
-// The first three fields of /proc/loadavg ("0.52 1.10 2.30"), or "" where there is none.
-std::string loadAverage() {
-    std::ifstream in("/proc/loadavg");
-    std::string one, five, fifteen;
-    if (!(in >> one >> five >> fifteen)) return "";
-    return one + " " + five + " " + fifteen;
-}
-
-std::string localTime() {
-    const std::time_t now = std::time(nullptr);
-    char text[64];
-    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M", std::localtime(&now));
-    return text;
 }
 
 struct LoadedScene {
@@ -197,6 +149,7 @@ bool plotPareto(const std::string& outDir) {
 } // namespace
 
 int runBench(const Config& config) {
+    if (config.suite) return runAccuracySuite(config);
     const auto start = std::chrono::steady_clock::now();
     const SweepPlan sweep{config.sweep,
             bench::RunOptions{2, config.sweep == bench::SweepSize::Full ? 7 : 3, 3}};

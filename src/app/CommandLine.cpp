@@ -365,6 +365,16 @@ bool applySweep(Config& config, const std::string& flag, const std::string& v, s
     return true;
 }
 
+bool applySuite(Config& config, const std::string& flag, const std::string& v, std::string& error) {
+    const std::optional<bench::SuiteSize> size = bench::parseSuiteSize(v);
+    if (!size) {
+        error = flag + " '" + v + "': expected quick or full";
+        return false;
+    }
+    config.suite = *size;
+    return true;
+}
+
 bool applyOutDir(Config& config, const std::string&, const std::string& v, std::string&) {
     config.outDir = v;
     return true;
@@ -398,6 +408,7 @@ constexpr OptionSpec kOptions[] = {
         {"--keys", kView, true, applyKeys},
         {"--quick", kBench, false, applyQuick},
         {"--sweep", kBench, true, applySweep},
+        {"--suite", kBench, true, applySuite},
         {"--out-dir", kBench, true, applyOutDir},
         {"--scene", kBench, true, applyScene},
 };
@@ -437,6 +448,16 @@ bool checkRequired(Config& config, std::string& error) {
 }
 
 } // namespace
+
+bool applyOption(Config& config, const std::string& flag, const std::string& value,
+        std::string& error) {
+    const OptionSpec* option = findOption(flag);
+    if (!option) {
+        error = "unknown option '" + flag + "'";
+        return false;
+    }
+    return option->apply(config, flag, value, error);
+}
 
 std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::string& error) {
     Config config;

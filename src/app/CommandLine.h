@@ -3,6 +3,7 @@
 // one line, and main turns it into exit status 2.
 #pragma once
 
+#include "bench/AccuracySuite.h"
 #include "bench/BenchSweep.h"
 
 #include "platform/GlContext.h"
@@ -63,6 +64,7 @@ struct Config {
     // bench
     bench::SweepSize sweep = bench::SweepSize::Full;   // --sweep, --quick
     std::string outDir;
+    std::optional<bench::SuiteSize> suite;             // --suite: the accuracy scoreboard
 };
 
 [[nodiscard]] std::optional<Config> parseCommandLine(int argc, const char* const* argv,
@@ -74,6 +76,11 @@ struct Config {
 
 // Path of the default scene (assets/cornell_box/cornell_box.gltf in the source tree).
 [[nodiscard]] std::string defaultScenePath();
+
+// Applies one command-line option as if it had been given ("--camera", "1"): how the accuracy
+// suite sets each of its scenes' cameras and lights from their command-line texts.
+[[nodiscard]] bool applyOption(Config& config, const std::string& flag, const std::string& value,
+        std::string& error);
 
 [[nodiscard]] bool parseLightSpec(const std::string& text, scene::Light& light, std::string& error);
 [[nodiscard]] bool parseCameraSpec(const std::string& text, CameraSpec& camera, std::string& error);

@@ -103,7 +103,17 @@ std::string usage(Command command) {
                "configurations per mode (minutes; the form CI runs). --scene naming the Cornell\n"
                "box measures it alone.\n"
                "--set changes the base settings under every configuration\n"
-               "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n";
+               "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n"
+               "\n"
+               "       voxatlas bench --suite quick|full [--scene NAME,...] [--out-dir DIR]\n"
+               "\n"
+               "The accuracy scoreboard: every scene of assets/scene_suite/ and two lightings of\n"
+               "Sponza in direct, voxel (defaults, quality preset) and atlas mode (defaults, and\n"
+               "converged with voxel visibility), scored against the one-bounce path tracer.\n"
+               "Writes results-accuracy.md, accuracy.csv and images/accuracy_*.png to --out-dir\n"
+               "(default docs). full: 128x128 (Sponza 192x108), 1024 spp references; quick (CI):\n"
+               "64x64 (128x72), 256 spp, no converged atlas in Sponza. --scene picks suite scenes\n"
+               "by name.\n";
     default:
         return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"
@@ -111,6 +121,7 @@ std::string usage(Command command) {
                "        [--set key=value ...]\n"
                "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
                "       voxatlas bench [--scene ...] [--sweep smoke|quick|full] [--out-dir DIR]\n"
+               "       voxatlas bench --suite quick|full   (the accuracy scoreboard)\n"
                "       voxatlas info SCENE [--set key=value ...]\n"
                "SCENE defaults to the Cornell box; --mode picks the GI mode the viewer starts in\n"
                "(keys 1-3 switch). Without a display, view renders a headless screenshot instead.\n"

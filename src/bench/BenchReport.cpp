@@ -87,27 +87,6 @@ std::vector<const BenchMeasurement*> frontier(const std::vector<BenchMeasurement
     return points;
 }
 
-bool writeAtomically(const fs::path& path, const std::string& text, std::string& error) {
-    const fs::path temporary = path.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out.flush()) {
-            error = temporary.string() + ": cannot write";
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            return false;
-        }
-    }
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        error = path.string() + ": " + ec.message();
-        fs::remove(temporary, ec);
-        return false;
-    }
-    return true;
-}
 
 std::string formatDuration(double seconds) {
     const long s = std::lround(seconds);
@@ -363,8 +342,8 @@ bool writeBenchReport(const std::string& directory,
         return false;
     }
     const fs::path dir(directory);
-    if (!writeAtomically(dir / "bench.csv", benchCsv(measurements), error)) return false;
-    if (!writeAtomically(dir / "bench.md", benchMarkdown(measurements, info), error)) {
+    if (!writeFileAtomically(dir / "bench.csv", benchCsv(measurements), error)) return false;
+    if (!writeFileAtomically(dir / "bench.md", benchMarkdown(measurements, info), error)) {
         fs::remove(dir / "bench.csv", ec);
         return false;
     }
@@ -422,6 +401,28 @@ bool runPlotScript(const std::string& python, const std::string& script,
     }
     message = last.empty() ? python + " " + script + " failed" : last;
     return false;
+}
+
+bool writeFileAtomically(const fs::path& path, const std::string& text, std::string& error) {
+    const fs::path temporary = path.string() + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        if (!out.flush()) {
+            error = temporary.string() + ": cannot write";
+            std::error_code ignored;
+            fs::remove(temporary, ignored);
+            return false;
+        }
+    }
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec) {
+        error = path.string() + ": " + ec.message();
+        fs::remove(temporary, ec);
+        return false;
+    }
+    return true;
 }
 
 } // namespace gi::bench

@@ -11,6 +11,7 @@
 
 #include "bench/BenchRunner.h"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,10 @@ void finalizeMeasurements(std::vector<BenchMeasurement>& measurements);
 // Writes bench.csv and bench.md into `directory` (created if needed).
 [[nodiscard]] bool writeBenchReport(const std::string& directory,
         const std::vector<BenchMeasurement>& measurements, const BenchRunInfo& info,
+        std::string& error);
+
+// Writes `text` to `path` through a temporary file renamed into place.
+[[nodiscard]] bool writeFileAtomically(const std::filesystem::path& path, const std::string& text,
         std::string& error);
 
 // Runs `python script csv png`; false with a one-line reason (no interpreter, a missing

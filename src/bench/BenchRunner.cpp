@@ -235,6 +235,7 @@ void recordErrors(const RenderedFrames& frames, const reference::ReferenceResult
     m.energyRatioIndirect = indirect.energyRatio;
     m.relRmseFinal = final.relativeRmse;
     m.scoredFrames = int(frames.indirectImages.size());
+    if (!frames.indirectImages.empty()) m.indirectImage = frames.indirectImages.back();
 }
 
 } // namespace

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "bench/BenchSweep.h"
+#include "core/Image.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "reference/ReferenceRenderer.h"
@@ -61,6 +62,7 @@ struct BenchMeasurement {
     double relRmseFinal = 0.0;         // final image
     double energyRatioIndirect = 0.0;  // sum ours / sum reference, indirect component
     int scoredFrames = 0;
+    core::Image indirectImage;         // the last scored frame's indirect component
     double referenceNoiseIndirect = 0.0;   // ReferenceResult::noise of the reference used
     double referenceNoiseFinal = 0.0;
     int referenceSpp = 0;

@@ -77,6 +77,11 @@ BenchConfiguration progressive(int resolution, int samples, int frames) {
 
 } // namespace
 
+std::vector<SettingChange> voxelQualityPreset() {
+    return {{"voxel.resolution", "64"}, {"voxel.cascades", "4"}, {"voxel.trace_scale", "1"},
+            {"voxel.coverage_max_axis", "1"}, {"voxel.inject_resolution", "256"}};
+}
+
 float shortMaxDistance(float sceneDiagonal) {
     const double quarter = 0.25 * std::max(sceneDiagonal, 1e-6f);
     const double magnitude = std::pow(10.0, std::floor(std::log10(quarter)) - 1.0);
@@ -151,9 +156,7 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
                     {"voxel.coverage_max_axis", "1"}},
             0.25));
     list.push_back(voxel("preset quality (v64 l4 trace 1, max-axis, inject 4v)",
-            {{"voxel.resolution", "64"}, {"voxel.cascades", "4"}, {"voxel.trace_scale", "1"},
-                    {"voxel.coverage_max_axis", "1"}, {"voxel.inject_resolution", "256"}},
-            1.0, 2.0));
+            voxelQualityPreset(), 1.0, 2.0));
 
     list.push_back(atlasBase);
     list.push_back(atlas("res 256", 256, 100));

@@ -70,6 +70,10 @@ struct SweepOptions {
 [[nodiscard]] bool applyConfiguration(const BenchConfiguration& configuration, Settings& settings,
         std::string& error);
 
+// The voxel quality preset: v=64, four levels, full-resolution trace, max-axis coverage,
+// injection at 4v (the bench's "preset quality" row and the accuracy suite's).
+[[nodiscard]] std::vector<SettingChange> voxelQualityPreset();
+
 // The "short" voxel.max_distance for a scene: a quarter of its bounding-box diagonal, rounded
 // to two significant digits (0.24 m for the Cornell box, 11 m for Sponza).
 [[nodiscard]] float shortMaxDistance(float sceneDiagonal);

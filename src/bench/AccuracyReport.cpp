@@ -1,0 +1,330 @@
+#include "bench/AccuracyReport.h"
+
+#include "bench/AccuracyImages.h"
+#include "bench/BenchReport.h"
+#include "core/ToneMap.h"
+#include "reference/ImageMetrics.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+namespace gi::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// The reference's noise must stay under this share of the error it scores (DESIGN.md).
+constexpr double kNoiseShareOfError = 0.2;
+
+std::string number(double value, int decimals = 3) {
+    if (!std::isfinite(value)) return "n/a";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+std::string percent(double value) {
+    return std::isfinite(value) ? number(100.0 * value, 1) + " %" : "n/a";
+}
+
+const BenchMeasurement* find(const SuiteSceneResult& result, const std::string& configuration) {
+    for (const BenchMeasurement& m : result.measurements) {
+        if (m.configuration.label == configuration) return &m;
+    }
+    return nullptr;
+}
+
+const SuiteSceneResult* findKind(const std::vector<SuiteSceneResult>& results, SceneKind kind) {
+    for (const SuiteSceneResult& r : results) {
+        if (r.scene.kind == kind) return &r;
+    }
+    return nullptr;
+}
+
+std::optional<double> leakOf(const std::vector<SuiteSceneResult>& results,
+        const SuiteSceneResult& dark, const std::string& configuration) {
+    const SuiteSceneResult* lit = findKind(results, SceneKind::LeakLit);
+    if (dark.scene.kind != SceneKind::LeakDark || !lit) return std::nullopt;
+    const BenchMeasurement* litRow = find(*lit, configuration);
+    const BenchMeasurement* darkRow = find(dark, configuration);
+    if (!litRow || !darkRow || !litRow->available || !darkRow->available) return std::nullopt;
+    const double litMean = meanGeometryLuminance(litRow->indirectImage, lit->reference.coverage);
+    const double darkMean = meanGeometryLuminance(darkRow->indirectImage, dark.reference.coverage);
+    return litMean > 0.0 ? darkMean / litMean : kNaN;
+}
+
+// The targets `score` misses, each as "what measured vs what wanted".
+std::vector<std::string> missedTargets(const SuiteScore& score) {
+    std::vector<std::string> misses;
+    const SuiteTarget& t = score.target;
+    if (t.maxRelRmseIndirect && !(score.relRmseIndirect <= *t.maxRelRmseIndirect)) {
+        misses.push_back("rel. RMSE " + number(score.relRmseIndirect) + " > " +
+                         number(*t.maxRelRmseIndirect, 2));
+    }
+    if (t.minEnergy && !(score.energyIndirect >= *t.minEnergy)) {
+        misses.push_back("energy " + number(score.energyIndirect) + " < " +
+                         number(*t.minEnergy, 2));
+    }
+    if (t.maxEnergy && !(score.energyIndirect <= *t.maxEnergy)) {
+        misses.push_back("energy " + number(score.energyIndirect) + " > " +
+                         number(*t.maxEnergy, 2));
+    }
+    if (t.maxFinalRatioToNoGi && !(score.finalRatioToNoGi <= *t.maxFinalRatioToNoGi)) {
+        misses.push_back("final error x" + number(score.finalRatioToNoGi, 2) + " of no GI > x" +
+                         number(*t.maxFinalRatioToNoGi, 2));
+    }
+    if (t.maxLeak && !(score.leak && *score.leak <= *t.maxLeak)) {
+        misses.push_back("leak " + (score.leak ? percent(*score.leak) : std::string("n/a")) +
+                         " > " + percent(*t.maxLeak));
+    }
+    return misses;
+}
+
+std::string targetText(const SuiteTarget& t) {
+    std::vector<std::string> parts;
+    if (t.maxRelRmseIndirect) parts.push_back("rel. RMSE <= " + number(*t.maxRelRmseIndirect, 2));
+    if (t.minEnergy && t.maxEnergy) {
+        parts.push_back("energy " + number(*t.minEnergy, 2) + "-" + number(*t.maxEnergy, 2));
+    }
+    if (t.maxFinalRatioToNoGi) {
+        parts.push_back("final error <= x" + number(*t.maxFinalRatioToNoGi, 1) + " no GI");
+    }
+    if (t.maxLeak) parts.push_back("leak <= " + percent(*t.maxLeak));
+    std::string text;
+    for (const std::string& part : parts) text += (text.empty() ? "" : ", ") + part;
+    return text;
+}
+
+const char* kindName(SceneKind kind) {
+    switch (kind) {
+    case SceneKind::Cornell: return "cornell";
+    case SceneKind::Sponza: return "sponza";
+    case SceneKind::LeakLit: return "leak-lit";
+    case SceneKind::LeakDark: return "leak-dark";
+    case SceneKind::Energy: return "energy";
+    case SceneKind::Scored: return "scored";
+    }
+    return "scored";
+}
+
+std::vector<std::string> configurationNames() {
+    return {kSuiteDirect, kSuiteVoxel, kSuiteVoxelQuality, kSuiteAtlas, kSuiteAtlasConverged};
+}
+
+const SuiteScore* findScore(const std::vector<SuiteScore>& scores, const std::string& scene,
+        const std::string& configuration) {
+    for (const SuiteScore& s : scores) {
+        if (s.scene == scene && s.configuration == configuration) return &s;
+    }
+    return nullptr;
+}
+
+// One table: a row per scene, a column per configuration, `cell` of each score.
+template <typename Cell>
+void gridTable(std::ostringstream& out, const std::vector<SuiteSceneResult>& results,
+        const std::vector<SuiteScore>& scores, Cell cell) {
+    out << "| scene |";
+    for (const std::string& c : configurationNames()) out << " " << c << " |";
+    out << "\n| --- |";
+    for (std::size_t i = 0; i < configurationNames().size(); ++i) out << " ---: |";
+    out << "\n";
+    for (const SuiteSceneResult& r : results) {
+        out << "| " << r.scene.name << " |";
+        for (const std::string& c : configurationNames()) {
+            const SuiteScore* s = findScore(scores, r.scene.name, c);
+            out << " " << (!s ? "-" : !s->available ? "not run" : cell(*s)) << " |";
+        }
+        out << "\n";
+    }
+    out << "\n";
+}
+
+void targetsSection(std::ostringstream& out, const std::vector<SuiteScore>& scores) {
+    int met = 0, total = 0;
+    out << "## Targets\n\n| scene | configuration | target | measured | |\n"
+           "| --- | --- | --- | --- | --- |\n";
+    for (const SuiteScore& s : scores) {
+        if (!s.target.any()) continue;
+        ++total;
+        met += s.available && s.misses.empty();
+        std::string measured = "rel. RMSE " + number(s.relRmseIndirect) + ", energy " +
+                               number(s.energyIndirect);
+        if (s.target.maxFinalRatioToNoGi) {
+            measured += ", final x" + number(s.finalRatioToNoGi, 2) + " no GI";
+        }
+        if (s.leak) measured = "leak " + percent(*s.leak);
+        std::string verdict = "met";
+        if (!s.available) verdict = "not run";
+        for (std::size_t i = 0; i < s.misses.size(); ++i) {
+            verdict = (i == 0 ? "**missed**: " : verdict + "; ") + s.misses[i];
+        }
+        out << "| " << s.scene << " | " << s.configuration << " | " << targetText(s.target)
+            << " | " << (s.available ? measured : "-") << " | " << verdict << " |\n";
+    }
+    out << "\n" << met << " of " << total << " targets met.\n\n";
+}
+
+void scenesSection(std::ostringstream& out, const std::vector<SuiteSceneResult>& results) {
+    out << "## Scenes\n\n| scene | tests | camera, lights | pixels | reference |\n"
+           "| --- | --- | --- | --- | --- |\n";
+    for (const SuiteSceneResult& r : results) {
+        std::string lights;
+        for (const std::string& l : r.scene.lights) lights += " --light " + l;
+        out << "| " << r.scene.name << " | " << r.scene.tests << " | `"
+            << (r.scene.file.empty() ? "Sponza" : r.scene.file) << " --camera " << r.scene.camera
+            << lights << "` | " << r.size.x << "x" << r.size.y << " | " << r.reference.spp
+            << " spp, noise " << percent(r.reference.noise.indirect) << " |\n";
+    }
+    out << "\n";
+}
+
+} // namespace
+
+double meanGeometryLuminance(const core::Image& image, const std::vector<float>& coverage) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(image.width) + std::size_t(x);
+            if (p < coverage.size() && coverage[p] <= reference::kGeometryCoverage) continue;
+            sum += core::luminance(image.at(x, y));
+            ++count;
+        }
+    }
+    return count ? sum / double(count) : kNaN;
+}
+
+std::vector<SuiteScore> scoreSuite(const std::vector<SuiteSceneResult>& results) {
+    std::vector<SuiteScore> scores;
+    for (const SuiteSceneResult& r : results) {
+        const BenchMeasurement* direct = find(r, kSuiteDirect);
+        const double noGiFinal = direct && direct->available ? direct->relRmseFinal : kNaN;
+        for (const BenchMeasurement& m : r.measurements) {
+            SuiteScore s;
+            s.scene = r.scene.name;
+            s.configuration = m.configuration.label;
+            s.kind = r.scene.kind;
+            s.available = m.available;
+            s.unavailableReason = m.unavailableReason;
+            s.target = suiteTarget(r.scene.kind, s.configuration);
+            if (m.available) {
+                s.relRmseIndirect = m.relRmseIndirect;
+                s.energyIndirect = m.energyRatioIndirect;
+                s.relRmseFinal = m.relRmseFinal;
+                s.finalRatioToNoGi = noGiFinal > 0.0 ? m.relRmseFinal / noGiFinal : kNaN;
+                s.meanIndirect = meanGeometryLuminance(m.indirectImage, r.reference.coverage);
+                s.leak = leakOf(results, r, s.configuration);
+                s.noiseLimited = !(r.reference.noise.indirect <=
+                                   kNoiseShareOfError * m.relRmseIndirect);
+                s.frameMs = m.frameMs;
+                s.misses = missedTargets(s);
+            }
+            scores.push_back(s);
+        }
+    }
+    return scores;
+}
+
+std::string accuracyCsv(const std::vector<SuiteScore>& scores) {
+    std::ostringstream out;
+    out << "scene,kind,configuration,available,rel_rmse_indirect,energy_indirect,"
+           "rel_rmse_final,final_ratio_to_no_gi,mean_indirect,leak,noise_limited,frame_ms,"
+           "target,misses\n";
+    for (const SuiteScore& s : scores) {
+        std::string misses;
+        for (const std::string& m : s.misses) misses += (misses.empty() ? "" : "; ") + m;
+        out << s.scene << "," << kindName(s.kind) << "," << s.configuration << ","
+            << (s.available ? 1 : 0) << "," << number(s.relRmseIndirect, 5) << ","
+            << number(s.energyIndirect, 5) << "," << number(s.relRmseFinal, 5) << ","
+            << number(s.finalRatioToNoGi, 5) << "," << number(s.meanIndirect, 6) << ","
+            << (s.leak ? number(*s.leak, 5) : "") << "," << (s.noiseLimited ? 1 : 0) << ","
+            << number(s.frameMs, 1) << ",\"" << targetText(s.target) << "\",\"" << misses
+            << "\"\n";
+    }
+    return out.str();
+}
+
+std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
+        const std::vector<SuiteScore>& scores, const SuiteRunInfo& info) {
+    std::ostringstream out;
+    out << "# Accuracy on the scene suite\n\n"
+        << "Every scene of `assets/scene_suite/` and two lightings of Sponza, rendered at the "
+           "program's defaults (`material.specular=0`, so the images compare with the "
+           "Lambertian path tracer) in every GI mode and scored against the one-bounce path "
+           "tracer over the pixels it covers: the indirect component's relative RMSE and "
+           "energy ratio, and the final image's error over that of the no-GI image.\n\n"
+        << "Produced by `" << info.command << "` (" << info.size << " form) on " << info.date
+        << ", " << info.glRenderer << ", in " << number(info.seconds / 60.0, 1)
+        << " min; load average " << info.loadBefore << " before, " << info.loadAfter
+        << " after.\n\n"
+        << "Configurations: **direct** no GI; **voxel** the defaults; **voxel quality** "
+           "the bench's quality preset (v=64, 4 levels, full-resolution trace, max-axis "
+           "coverage, injection at 4v); **atlas** the defaults, one frame; **atlas converged** "
+           "`atlas.visibility=voxel`, accumulated to `atlas.target_samples`.\n\n";
+    for (const std::string& note : info.notes) out << "Note: " << note << "\n\n";
+
+    targetsSection(out, scores);
+    out << "## Relative RMSE of the indirect component\n\n"
+           "(noise: marked * where the reference's noise exceeds a fifth of the error)\n\n";
+    gridTable(out, results, scores, [](const SuiteScore& s) {
+        return number(s.relRmseIndirect) + (s.noiseLimited ? "*" : "");
+    });
+    out << "## Indirect energy ratio (ours / reference)\n\n";
+    gridTable(out, results, scores, [](const SuiteScore& s) { return number(s.energyIndirect); });
+    out << "## Final image: relative RMSE, and its ratio to the no-GI image's\n\n";
+    gridTable(out, results, scores, [](const SuiteScore& s) {
+        return number(s.relRmseFinal) + " (x" + number(s.finalRatioToNoGi, 2) + ")";
+    });
+    if (const SuiteSceneResult* dark = findKind(results, SceneKind::LeakDark)) {
+        const SuiteSceneResult* lit = findKind(results, SceneKind::LeakLit);
+        if (lit) {
+            const double truth =
+                    meanGeometryLuminance(dark->reference.indirect, dark->reference.coverage) /
+                    meanGeometryLuminance(lit->reference.indirect, lit->reference.coverage);
+            out << "## Leak through the thin wall\n\nMean indirect luminance seen in the dark "
+                   "room over that seen in the lit room (the path tracer: "
+                << percent(truth) << ").\n\n";
+            gridTable(out, {*dark}, scores, [](const SuiteScore& s) {
+                return s.leak ? percent(*s.leak) : std::string("n/a");
+            });
+        }
+    }
+    scenesSection(out, results);
+    out << "## Images\n\nIndirect light, each row: reference | voxel | atlas (converged where "
+           "run) | voxel error | atlas error. The three images share the reference's auto "
+           "exposure and the filmic curve; the error maps show |ours - reference| on a heat "
+           "scale where white is the reference's mean indirect luminance.\n\n";
+    for (const SuiteSceneResult& r : results) {
+        out << "### " << r.scene.name << "\n\n![" << r.scene.name << "](images/"
+            << accuracyImageName(r.scene.name) << ")\n\n";
+    }
+    return out.str();
+}
+
+bool writeAccuracyReport(const std::string& directory,
+        const std::vector<SuiteSceneResult>& results, const SuiteRunInfo& info,
+        std::string& error) {
+    const fs::path dir(directory);
+    std::error_code ec;
+    fs::create_directories(dir / "images", ec);
+    if (ec) {
+        error = (dir / "images").string() + ": " + ec.message();
+        return false;
+    }
+    for (const SuiteSceneResult& r : results) {
+        if (!writeAccuracyImage((dir / "images" / accuracyImageName(r.scene.name)).string(), r,
+                    error)) {
+            return false;
+        }
+    }
+    const std::vector<SuiteScore> scores = scoreSuite(results);
+    return writeFileAtomically(dir / "accuracy.csv", accuracyCsv(scores), error) &&
+           writeFileAtomically(dir / "results-accuracy.md",
+                   accuracyMarkdown(results, scores, info), error);
+}
+
+} // namespace gi::bench
