@@ -199,7 +199,8 @@ struct VoxelUniforms {                  // std140
                                         // fragment is discarded, yzw = unused
     vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
                                         // pixel area (m^2), z = 1 for max-axis coverage in
-                                        // propagation, w = unused
+                                        // propagation, w = 1 when cone tracing takes a
+                                        // coarser level's unit normal for one plane
     vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
                                         // y = 1 to jitter the cone ring per pixel, zw = unused
 };

@@ -24,7 +24,8 @@ const float kPlaneTolerance = 0.1;
 
 // Whether the voxel's normal texel on `level` says it holds one plane. `coarserLevels` takes
 // a coarser level's unit-length normal for one plane as well, which it is not where surfaces
-// meet (above); only cone tracing's coarsest-level walk asks for that.
+// meet (above); only cone tracing's coarsest-level walk asks for that, under
+// voxel.coarse_planes.
 bool voxelHoldsOnePlane(vec4 plane, int level, bool coarserLevels) {
     return (level == 0 || coarserLevels) && length(plane.xyz) >= kOnePlaneNormal;
 }

@@ -25,8 +25,12 @@
 // (voxel_plane.glsl) is met where the axis crosses that plane, with opacity = coverage, or
 // not at all; other occupied voxels occlude like finer levels' samples over the axis' path
 // through them. Whenever the cascade has more than one level the coarsest is propagated, and
-// its normals cannot tell one plane from several: the walk takes each of its voxels for one
-// plane, so a voxel where surfaces meet is met at their mean plane. The light met there is the
+// its normals cannot tell one plane from several: with voxel.coarse_planes (the default) the
+// walk takes each of its voxels for one plane, so a voxel where surfaces meet is met at their
+// mean plane; without it every coarser voxel occludes along the path (the honest rule, which
+// measured worse: a Cornell box seen from outside, relative RMSE 0.46 -> 1.01, the walls'
+// voxels smeared over their whole path let the ceiling's hot patch reach every cone near
+// it). The light met there is the
 // reflected light over the cone's footprint: the filtered voxels while the cone is narrower
 // than they are, then the pyramid above the coarsest level (RadiancePyramidPass.h) at the
 // cone's width.
@@ -150,7 +154,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
                 // sends no light this way, and its occlusion would mostly be the cone's own
                 // surface seen from behind (the voxel layer the cone starts in).
                 if (cosine > 0.0) continue;
-                if (voxelHoldsOnePlane(plane, coarsest, true)) {
+                if (voxelHoldsOnePlane(plane, coarsest, voxel.modes.w != 0.0)) {
                     // One flat surface: the axis meets it where it crosses its plane, or not
                     // at all in this voxel, and crossing it is an occlusion of `coverage`.
                     vec3 centre = coarsestOrigin + (cell + 0.5) * coarsestSize;

@@ -28,8 +28,11 @@ struct VoxelSettings {
     float traceScale = 0.5f;      // voxel.trace_scale: cone-trace resolution / output resolution
     float maxDistance = 0.0f;     // voxel.max_distance: metres; 0 = edge of the coarsest level
     float extent = 0.0f;          // voxel.extent: finest level edge (m); 0 = from the scene
-    bool coverageMaxAxis = false; // voxel.coverage_max_axis: coarse coverage from the most
-                                  // opaque axis instead of the thesis' mean
+    bool coverageMaxAxis = true;  // voxel.coverage_max_axis: coarse coverage from the most
+                                  // opaque axis instead of the thesis' mean (which halves a
+                                  // one-voxel wall's opacity per level and loses its light)
+    bool coarsePlanes = true;     // voxel.coarse_planes: cone tracing takes a coarser level's
+                                  // voxel for one plane (0: only level 0, voxel_plane.glsl)
     bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds
                                   // (finest level holding the scene) instead of the camera
     bool clampCentre = false;     // voxel.clamp_centre: the camera-centred cascade's centre

@@ -196,7 +196,8 @@ TEST_F(VoxelGpuTest, PlaneUnderDirectionalLightHasAnalyticIrradiance) {
 
 // Propagation conserves the coverage-weighted colour: a coarse level's centre holds, summed,
 // one eighth of the finer level's albedo x coverage, which the albedo texture stores
-// premultiplied (1%, half-float sums).
+// premultiplied (1%, half-float sums). This is the thesis' mean propagation; the default
+// max-axis coverage rescales each coarse voxel to the opacity a ray meets and so adds colour.
 TEST_F(VoxelGpuTest, PropagationConservesCoverageWeightedColour) {
     const scene::Scene scene = loadCornellBox();
     scene::Scene inside = scene;
@@ -204,6 +205,7 @@ TEST_F(VoxelGpuTest, PropagationConservesCoverageWeightedColour) {
     inside.cameras[0] = lookAtCamera({0.278f, 0.27f, -0.28f}, {0.278f, 0.27f, -0.6f}, 60.0f);
     Settings settings;
     settings.voxel.extent = 0.3f;
+    settings.voxel.coverageMaxAxis = false;
     VoxelFrame frame(inside, settings, {32, 32});
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);

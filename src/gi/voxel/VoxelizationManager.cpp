@@ -100,7 +100,8 @@ void VoxelizationManager::writeUniforms() {
     const int coarsest = mVolume.levels() - 1;
     const float rasterPixel = mVolume.extent(coarsest) / float(mSettings.resolution * mSettings.multiplier);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
-            rasterPixel * rasterPixel, mSettings.coverageMaxAxis ? 1.0f : 0.0f, 0.0f);
+            rasterPixel * rasterPixel, mSettings.coverageMaxAxis ? 1.0f : 0.0f,
+            mSettings.coarsePlanes ? 1.0f : 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
