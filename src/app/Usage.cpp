@@ -74,6 +74,10 @@ std::string usage(Command command) {
                "--tonemap filmic: the ACES fit of Narkowicz (2015) after the exposure. The\n"
                "defaults keep the PNG linear at exposure 1; the HDR image is always linear.\n"
                "\n"
+               "render.plan=adaptive (the default) sizes the voxel cascade and the atlas from the\n"
+               "scene; --set of a key marked 'fixed plan' selects render.plan=fixed (the thesis'\n"
+               "allocation) and says so on stderr. `voxatlas info SCENE` shows the plan.\n"
+               "\n"
                "--light point:x,y,z:r,g,b:intensity\n"
                "        spot:x,y,z:dx,dy,dz:r,g,b:intensity[:inner_deg,outer_deg]\n"
                "        dir:dx,dy,dz:r,g,b:intensity\n"
@@ -86,8 +90,11 @@ std::string usage(Command command) {
         return "usage: voxatlas info SCENE [--set key=value ...]\n"
                "Prints counts, bounds, lights, cameras and the memory plan of a glTF scene: the\n"
                "scene's own buffers, and the GI resources the settings give it (voxel cascade,\n"
-               "atlas, shadow maps). --set render.plan=adaptive shows the plan sized from the\n"
-               "scene; --set voxel.resolution=64 etc. change either plan.\n";
+               "atlas, shadow maps), and which plan is active and why: the adaptive plan (the\n"
+               "default) sizes voxel.cascades, voxel.extent, voxel.scene_centred,\n"
+               "voxel.clamp_centre and atlas.resolution from the scene; setting one of them\n"
+               "selects render.plan=fixed (the thesis' allocation). --set voxel.resolution=64\n"
+               "etc. change either plan.\n";
     case Command::Bench:
         return "usage: voxatlas bench [--scene SCENE] [--sweep smoke|quick|full] [--quick]\n"
                "        [--out-dir DIR] [--gl egl|osmesa]\n"
@@ -103,7 +110,8 @@ std::string usage(Command command) {
                "configurations per mode (minutes; the form CI runs). --scene naming the Cornell\n"
                "box measures it alone.\n"
                "--set changes the base settings under every configuration\n"
-               "(material.specular is always 0, voxel.cache always 0: every pass every frame).\n";
+               "(material.specular is always 0, voxel.cache always 0: every pass every frame;\n"
+               "render.plan is fixed, the thesis' allocation, unless --set render.plan is given).\n";
     default:
         return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"

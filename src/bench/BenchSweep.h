@@ -9,7 +9,8 @@
 //          progressive accumulation over several frames (a separate plot series, since its
 //          image needs N frames of a static scene).
 // The base settings underneath are the program's defaults with the bench's fixed changes
-// (material.specular=0, so images are comparable with the Lambertian reference).
+// (material.specular=0, so images are comparable with the Lambertian reference; the thesis'
+// allocation, render.plan=fixed, unless --set render.plan is given).
 #pragma once
 
 #include "render/FrameRenderer.h"
