@@ -26,6 +26,10 @@ GEOMETRY_COVERAGE = 0.999              # reference::kGeometryCoverage
 # The cascade's textures (VoxelTextures) in the memory report.
 VOXEL_CASCADE = ("voxel/albedo", "voxel/normal", "voxel/irradiance", "voxel/helper",
                  "voxel/lock", "voxel/pyramid")
+# The pages these scripts write measure the thesis' allocation, so every render starts from
+# render.plan=fixed (the program's default is the adaptive plan); a script's own render.plan
+# setting comes later on the command line and wins.
+THESIS_PLAN = ["--set", "render.plan=fixed"]
 START = time.time()
 
 BIN = os.path.join(ROOT, "build", "voxatlas")   # set from --bin by use_binary()
@@ -93,7 +97,7 @@ def render(scene, options, out_png=None, hdr=False, timings=False, env=None):
     with tempfile.TemporaryDirectory() as tmp:
         pfm = os.path.join(tmp, "o.pfm")
         report = os.path.join(tmp, "t.json")
-        cmd = [BIN, "render", scene, "--out", out_png or os.path.join(tmp, "o.png")]
+        cmd = [BIN, "render", scene, "--out", out_png or os.path.join(tmp, "o.png")] + THESIS_PLAN
         cmd += ["--hdr", pfm] if hdr else []
         cmd += ["--timings", report] if timings else []
         log, rss = run(cmd + list(options), env)

@@ -49,6 +49,9 @@ Settings baseSettings(const Config& config) {
     // redoes every pass each frame, as the thesis does (docs/results-adaptive.md measures
     // what static caching saves).
     base.voxel.cache = false;
+    // Its one-at-a-time rows set voxel.cascades and atlas.resolution, which the adaptive plan
+    // would replace: the sweep varies the thesis' allocation unless render.plan is given.
+    if (!config.plan.planGiven) base.plan = PLAN_FIXED;
     if (base.reference.spp == Settings{}.reference.spp) {
         base.reference.spp = config.sweep == bench::SweepSize::Full ? 256 : 64;
     }

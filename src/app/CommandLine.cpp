@@ -275,7 +275,9 @@ bool applyGl(Config& config, const std::string&, const std::string& v, std::stri
 }
 
 bool applySet(Config& config, const std::string&, const std::string& v, std::string& error) {
-    return applySetting(config.settings, v, error);
+    if (!applySetting(config.settings, v, error)) return false;
+    config.settingKeys.push_back(v.substr(0, v.find('=')));
+    return true;
 }
 
 bool applyExposure(Config& config, const std::string&, const std::string& v,
@@ -503,7 +505,10 @@ std::optional<Config> parseCommandLine(int argc, const char* const* argv, std::s
         const std::string value = option->takesValue ? argv[++i] : "";
         if (!option->apply(config, arg, value, error)) return std::nullopt;
     }
-    if (!checkRequired(config, error)) return std::nullopt;
+    if (!checkRequired(config, error) ||
+            !choosePlan(config.settings, config.settingKeys, config.plan, error)) {
+        return std::nullopt;
+    }
     return config;
 }
 

@@ -3,6 +3,7 @@
 // one line, and main turns it into exit status 2.
 #pragma once
 
+#include "app/PlanChoice.h"
 #include "bench/AccuracySuite.h"
 #include "bench/BenchSweep.h"
 
@@ -50,6 +51,8 @@ struct Config {
     platform::HeadlessProvider gl = platform::HeadlessProvider::Egl;
     bool glExplicit = false;                 // --gl given: no silent fallback
     Settings settings;
+    std::vector<std::string> settingKeys;    // the keys --set gave, in order
+    PlanChoice plan;                         // render.plan as settled from them (PlanChoice.h)
     // --exposure, --tonemap: render defaults to exposure 0 and no curve (linear PNGs), view
     // to auto exposure and the filmic curve; the flags say what was given.
     core::ToneMapping toneMapping;

@@ -120,12 +120,12 @@ int runInfo(const Config& config) {
     printLights(scene);
     printCameras(scene);
     printSceneMemory(scene);
-    // The GI resources at the given settings (--set render.plan=adaptive for the scene-derived
-    // plan), from the scene's first camera.
+    // The GI resources at the given settings (the adaptive plan unless render.plan=fixed or a
+    // key it sizes was set), from the scene's first camera.
     const glm::vec3 eye = scene.cameras.empty() ? scene.bounds.center()
                                                 : glm::vec3(scene.cameras.front().worldFromCamera[3]);
-    std::printf("%s", render::describePlan(
-            render::planResources(scene, scene.lights, config.settings, eye)).c_str());
+    const render::ResourcePlan plan = render::planResources(scene, scene.lights, config.settings, eye);
+    std::printf("%s", render::describePlan(plan, config.plan.why).c_str());
     return 0;
 }
 

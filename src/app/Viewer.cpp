@@ -2,6 +2,7 @@
 
 #include "app/FlyCamera.h"
 #include "app/HeadlessView.h"
+#include "app/PlanChoice.h"
 #include "app/SceneSetup.h"
 #include "app/SettingHotkeys.h"
 #include "app/Ui.h"
@@ -216,7 +217,7 @@ void Viewer::cycleOutput() {
 }
 
 void Viewer::changeSetting(const std::function<void(Settings&)>& change, const std::string& key) {
-    Settings candidate = mSettings;
+    Settings candidate = settingsToStep(mSettings, mRenderer.effectiveSettings(), key);
     change(candidate);
     std::string error;
     if (!mRenderer.setSettings(candidate, error)) {

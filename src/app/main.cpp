@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "voxatlas: %s\n", error.c_str());
             return 2;
         }
+        if (!config->plan.note.empty()) {
+            std::fprintf(stderr, "voxatlas: %s\n", config->plan.note.c_str());
+        }
         switch (config->command) {
         case Command::Help: std::fputs(usage(config->helpFor).c_str(), stdout); return 0;
         case Command::Render: return runRender(*config);

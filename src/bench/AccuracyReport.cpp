@@ -262,8 +262,7 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
         << " min; load average " << info.loadBefore << " before, " << info.loadAfter
         << " after.\n\n"
         << "Configurations: **direct** no GI; **voxel** the defaults; **voxel quality** "
-           "the bench's quality preset (v=64, 4 levels, full-resolution trace, max-axis "
-           "coverage, injection at 4v); **atlas** the defaults, one frame; **atlas converged** "
+           "v=64, full-resolution trace, injection at 4v; **atlas** the defaults, one frame; **atlas converged** "
            "`atlas.visibility=voxel`, accumulated to `atlas.target_samples`.\n\n";
     for (const std::string& note : info.notes) out << "Note: " << note << "\n\n";
 

@@ -9,7 +9,8 @@
 //          progressive accumulation over several frames (a separate plot series, since its
 //          image needs N frames of a static scene).
 // The base settings underneath are the program's defaults with the bench's fixed changes
-// (material.specular=0, so images are comparable with the Lambertian reference).
+// (material.specular=0, so images are comparable with the Lambertian reference; the thesis'
+// allocation, render.plan=fixed, unless --set render.plan is given).
 #pragma once
 
 #include "render/FrameRenderer.h"
@@ -70,8 +71,8 @@ struct SweepOptions {
 [[nodiscard]] bool applyConfiguration(const BenchConfiguration& configuration, Settings& settings,
         std::string& error);
 
-// The voxel quality preset: v=64, four levels, full-resolution trace, max-axis coverage,
-// injection at 4v (the bench's "preset quality" row and the accuracy suite's).
+// The voxel quality preset, under any plan: v=64, full-resolution trace, injection at 4v
+// (the accuracy suite's; the bench's "preset quality" row adds four levels of the fixed plan).
 [[nodiscard]] std::vector<SettingChange> voxelQualityPreset();
 
 // The "short" voxel.max_distance for a scene: a quarter of its bounding-box diagonal, rounded

@@ -104,8 +104,9 @@ SettingSpec hidden(SettingSpec spec) {
 const std::vector<SettingSpec>& settingSpecs() {
     static const std::vector<SettingSpec> specs = {
         choiceSetting("render.plan",
-                "GI resources as set (fixed, the thesis' allocation) or sized from the scene "
-                "(adaptive: voxel.size, atlas.texel_size; see `voxatlas info`)",
+                "GI resources sized from the scene (adaptive: voxel.size, atlas.texel_size) or as "
+                "set (fixed, the thesis' allocation); setting a key marked 'fixed plan' selects "
+                "fixed; `voxatlas info` shows the plan",
                 {"fixed", "adaptive"}, [](Settings& s) -> int& { return s.plan; }),
         intSetting("render.supersample", "samples per pixel per axis, box-averaged", 1, 4,
                 [](Settings& s) -> int& { return s.supersample; }),
@@ -131,7 +132,8 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> float& { return s.shadow.pcfRadius; }),
         intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
                 [](Settings& s) -> int& { return s.voxel.resolution; }),
-        intSetting("voxel.cascades", "nested cascade levels, each doubling the edge", 1, 8,
+        intSetting("voxel.cascades",
+                "nested cascade levels, each doubling the edge (fixed plan)", 1, 8,
                 [](Settings& s) -> int& { return s.voxel.levels; }),
         intSetting("voxel.multiplier", "voxelization raster resolution / voxel resolution", 1, 16,
                 [](Settings& s) -> int& { return s.voxel.multiplier; }),
@@ -144,14 +146,15 @@ const std::vector<SettingSpec>& settingSpecs() {
                 0.0625f, 1.0f, [](Settings& s) -> float& { return s.voxel.traceScale; }),
         floatSetting("voxel.max_distance", "cone length in metres (0 = to the coarsest level's edge)",
                 0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.maxDistance; }),
-        floatSetting("voxel.extent", "finest level edge in metres (0 = derived from the scene)", 0.0f,
-                1e6f, [](Settings& s) -> float& { return s.voxel.extent; }),
+        floatSetting("voxel.extent",
+                "finest level edge in metres (0 = derived from the scene; fixed plan)", 0.0f, 1e6f,
+                [](Settings& s) -> float& { return s.voxel.extent; }),
         floatSetting("voxel.size",
                 "finest voxel edge in metres for render.plan=adaptive (0 = the scene's shortest "
                 "side / voxel.resolution)",
                 0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.size; }),
         boolSetting("voxel.clamp_centre",
-                "keep the camera-centred cascade's centre inside the scene's bounds",
+                "keep the camera-centred cascade's centre inside the scene's bounds (fixed plan)",
                 [](Settings& s) -> bool& { return s.voxel.clampCentre; }),
         boolSetting("voxel.coverage_max_axis",
                 "propagate coverage as the most opaque axis' opacity (walls stay opaque)",
@@ -160,7 +163,8 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "cone tracing meets a coarser level's voxel at its mean plane (0 = only level 0's)",
                 [](Settings& s) -> bool& { return s.voxel.coarsePlanes; }),
         boolSetting("voxel.scene_centred",
-                "centre the cascade on the scene (finest level holds it) instead of the camera",
+                "centre the cascade on the scene (finest level holds it) instead of the camera "
+                "(fixed plan)",
                 [](Settings& s) -> bool& { return s.voxel.sceneCentred; }),
         floatSetting("voxel.cone_angle", "full aperture of each of the 9 diffuse cones, degrees", 5.0f,
                 90.0f, [](Settings& s) -> float& { return s.voxel.coneAngle; }),
@@ -182,7 +186,7 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> int& { return s.voxel.filterRadius; }),
         intSetting("voxel.debug_level", "cascade level shown by the voxel debug views", 0, 7,
                 [](Settings& s) -> int& { return s.voxel.debugLevel; }),
-        intSetting("atlas.resolution", "texels per side of the GI atlas", 16, 4096,
+        intSetting("atlas.resolution", "texels per side of the GI atlas (fixed plan)", 16, 4096,
                 [](Settings& s) -> int& { return s.atlas.resolution; }),
         floatSetting("atlas.texel_size",
                 "atlas texel edge in metres for render.plan=adaptive (0 = half the finest voxel)",

@@ -83,8 +83,8 @@ enum PlanMode : int { PLAN_FIXED = 0, PLAN_ADAPTIVE = 1 };
 
 struct Settings {
     // Rendering.
-    int plan = PLAN_FIXED;             // render.plan: fixed (the thesis' settings as given) or
-                                       // adaptive (cascades and atlas sized from the scene)
+    int plan = PLAN_ADAPTIVE;          // render.plan: adaptive (cascades and atlas sized from
+                                       // the scene) or fixed (the thesis' settings as given)
     int supersample = 1;        // render.supersample: pixels averaged per output pixel per axis
     int frames = 1;             // render.frames: frames rendered; timings are their median
     int warmupFrames = 0;       // render.warmup: frames rendered and discarded before timing

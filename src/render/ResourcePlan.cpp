@@ -216,6 +216,12 @@ Settings applyPlan(const Settings& settings, const ResourcePlan& plan) {
     return s;
 }
 
+const std::vector<std::string>& adaptivePlanKeys() {
+    static const std::vector<std::string> keys = {"voxel.cascades", "voxel.extent",
+            "voxel.scene_centred", "voxel.clamp_centre", "atlas.resolution"};
+    return keys;
+}
+
 std::vector<scene::Light> plannedLights(const std::vector<scene::Light>& lights,
         const ResourcePlan& plan) {
     std::vector<scene::Light> kept;
@@ -225,13 +231,12 @@ std::vector<scene::Light> plannedLights(const std::vector<scene::Light>& lights,
     return kept;
 }
 
-std::string describePlan(const ResourcePlan& plan) {
+std::string describePlan(const ResourcePlan& plan, const std::string& why) {
     char line[256];
-    std::string text;
-    std::snprintf(line, sizeof line, "plan       %s\n",
-            plan.mode == PLAN_ADAPTIVE ? "adaptive (render.plan=adaptive)"
-                                       : "fixed (render.plan=fixed: the settings as given)");
-    text += line;
+    std::string text = std::string("plan       ") +
+            (plan.mode == PLAN_ADAPTIVE ? "adaptive (sized from the scene)"
+                                        : "fixed (the settings as given)") +
+            (why.empty() ? "" : ": " + why) + "\n";
     const VoxelPlan& v = plan.voxel;
     std::snprintf(line, sizeof line,
             "  voxel    %d^3 x %d level%s, %s, finest voxel %.4g m, coarsest level %.4g m: %.2f MiB\n",

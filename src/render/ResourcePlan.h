@@ -60,9 +60,13 @@ struct ResourcePlan {
 [[nodiscard]] ResourcePlan planResources(const scene::Scene& scene,
         const std::vector<scene::Light>& lights, const Settings& settings, const glm::vec3& eye);
 
-// `settings` with the plan's sizes written into them (voxel.cascades, voxel.extent,
-// voxel.scene_centred, voxel.clamp_centre, atlas.resolution); unchanged for fixed plans.
+// `settings` with the plan's sizes written into them (adaptivePlanKeys()); unchanged for fixed
+// plans.
 [[nodiscard]] Settings applyPlan(const Settings& settings, const ResourcePlan& plan);
+
+// The --set keys whose values applyPlan replaces under render.plan=adaptive: a value given for
+// one of them takes effect only with render.plan=fixed.
+[[nodiscard]] const std::vector<std::string>& adaptivePlanKeys();
 
 // The lights the plan keeps, in the scene's order.
 [[nodiscard]] std::vector<scene::Light> plannedLights(const std::vector<scene::Light>& lights,
@@ -80,7 +84,8 @@ inline constexpr double kAdaptiveLightCutoff = 1e-4;
 // Total world-space triangle area of every instance, m^2.
 [[nodiscard]] double sceneSurfaceArea(const scene::Scene& scene);
 
-// Multi-line description for `voxatlas info` and the viewer's overlay.
-[[nodiscard]] std::string describePlan(const ResourcePlan& plan);
+// Multi-line description for `voxatlas info` and the viewer's overlay; `why` (e.g. "the
+// default") follows the plan's name when given.
+[[nodiscard]] std::string describePlan(const ResourcePlan& plan, const std::string& why = "");
 
 } // namespace gi::render

@@ -1,5 +1,5 @@
-// The resource plan on the command line: `info` prints the fixed and the adaptive plan with
-// their bytes; `render --move` times a moving camera (voxel.cache redoes the cascade as it
+// The resource plan on the command line: `info` prints the adaptive (default) and the fixed plan
+// with their bytes and why that plan is active; `render --move` times a moving camera (voxel.cache redoes the cascade as it
 // moves); bad values are refused with one line and exit 2.
 #include "Process.h"
 
@@ -30,19 +30,40 @@ int voxelizeSamples(const std::string& timingsPath) {
 }
 
 TEST(ResourcePlanCommand, InfoPrintsBothPlans) {
-    const ProcessResult fixed = runVoxatlas({"info", kBox});
-    ASSERT_EQ(fixed.exitCode, 0) << fixed.err;
-    EXPECT_NE(fixed.out.find("plan       fixed"), std::string::npos) << fixed.out;
-    EXPECT_NE(fixed.out.find("voxel    32^3 x 3 levels, centred on the camera"), std::string::npos)
-            << fixed.out;
-    EXPECT_NE(fixed.out.find("atlas    1024^2 texels"), std::string::npos) << fixed.out;
-    const ProcessResult adaptive =
-            runVoxatlas({"info", kBox, "--set", "render.plan=adaptive", "--set", "voxel.resolution=64"});
+    const ProcessResult adaptive = runVoxatlas({"info", kBox, "--set", "voxel.resolution=64"});
     ASSERT_EQ(adaptive.exitCode, 0) << adaptive.err;
-    EXPECT_NE(adaptive.out.find("plan       adaptive"), std::string::npos) << adaptive.out;
+    EXPECT_NE(adaptive.out.find("plan       adaptive (sized from the scene): the default"),
+            std::string::npos) << adaptive.out;
     EXPECT_NE(adaptive.out.find("voxel    64^3 x 1 level, centred on the scene"), std::string::npos)
             << adaptive.out;
     EXPECT_NE(adaptive.out.find("lights   1 with shadow maps"), std::string::npos) << adaptive.out;
+    EXPECT_TRUE(adaptive.err.empty()) << adaptive.err;
+    const ProcessResult fixed = runVoxatlas({"info", kBox, "--set", "render.plan=fixed"});
+    ASSERT_EQ(fixed.exitCode, 0) << fixed.err;
+    EXPECT_NE(fixed.out.find("plan       fixed (the settings as given): render.plan=fixed was set"),
+            std::string::npos) << fixed.out;
+    EXPECT_NE(fixed.out.find("voxel    32^3 x 3 levels, centred on the camera"), std::string::npos)
+            << fixed.out;
+    EXPECT_NE(fixed.out.find("atlas    1024^2 texels"), std::string::npos) << fixed.out;
+    EXPECT_TRUE(fixed.err.empty()) << fixed.err;
+}
+
+// A value for a key the adaptive plan sizes is what the user wants: it selects the fixed plan
+// and says so on stderr, never silently replaced; with render.plan=adaptive it is refused.
+TEST(ResourcePlanCommand, AKeyTheAdaptivePlanSizesSelectsTheFixedPlan) {
+    const ProcessResult r = runVoxatlas({"info", kBox, "--set", "voxel.cascades=4"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("voxel.cascades set, so render.plan=fixed"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("plan       fixed (the settings as given): voxel.cascades set"),
+            std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("32^3 x 4 levels"), std::string::npos) << r.out;
+    const ProcessResult both = runVoxatlas(
+            {"info", kBox, "--set", "voxel.cascades=4", "--set", "render.plan=adaptive"});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_NE(both.err.find("--set voxel.cascades: render.plan=adaptive sizes it from the scene; "
+                            "set render.plan=fixed to choose it"),
+            std::string::npos) << both.err;
+    EXPECT_TRUE(both.out.empty()) << both.out;
 }
 
 TEST(ResourcePlanCommand, InfoRefusesABadPlan) {
@@ -53,11 +74,13 @@ TEST(ResourcePlanCommand, InfoRefusesABadPlan) {
 
 TEST(ResourcePlanCommand, MovingCameraRevoxelizesOnlyWhenTheCascadeMoves) {
     const std::string dir = makeTempDir("plan-move");
-    auto voxelizations = [&](const std::string& move, const std::string& cache) {
-        const std::string timings = dir + "/t" + move + cache + ".json";
+    auto voxelizations = [&](const std::string& move, const std::string& cache,
+                                 const std::string& plan = "fixed") {
+        const std::string timings = dir + "/t" + move + cache + plan + ".json";
         const ProcessResult r = runVoxatlas({"render", kBox, "--mode", "voxel", "--out",
                 dir + "/o.png", "--width", "32", "--height", "32", "--timings", timings, "--move",
-                move, "--set", "render.frames=6", "--set", "voxel.cache=" + cache});
+                move, "--set", "render.frames=6", "--set", "voxel.cache=" + cache, "--set",
+                "render.plan=" + plan});
         EXPECT_EQ(r.exitCode, 0) << r.err;
         return voxelizeSamples(timings);
     };
@@ -65,6 +88,9 @@ TEST(ResourcePlanCommand, MovingCameraRevoxelizesOnlyWhenTheCascadeMoves) {
     EXPECT_EQ(voxelizations("0,0,0", "0"), 6) << "without the cache, every frame";
     // 30 cm per frame: beyond a coarsest voxel (8.5 cm), the cascade moves every frame.
     EXPECT_EQ(voxelizations("0,0,-0.3", "1"), 6);
+    // The adaptive plan holds the whole box in one scene-centred level, which a camera moving
+    // inside it never moves.
+    EXPECT_EQ(voxelizations("0,0,-0.3", "1", "adaptive"), 1);
 }
 
 TEST(ResourcePlanCommand, PlayingAnAnimationRevoxelizesOnlyTheFramesItMoves) {

@@ -45,11 +45,13 @@ const char* modeName(Mode mode) {
     return "?";
 }
 
-// Settings every run shares: Lambertian materials (the ceilings assume them) and a cheap but
-// deterministic reference.
+// Settings every run shares: Lambertian materials (the ceilings assume them), a cheap but
+// deterministic reference, and the thesis' allocation (render.plan=fixed), whose ends the
+// cases push: voxel.cascades and atlas.resolution are values of the fixed plan only.
 std::vector<std::string> baseArgs(Mode mode) {
     std::vector<std::string> args = {"--mode", modeName(mode), "--width", std::to_string(kSize),
-            "--height", std::to_string(kSize), "--set", "material.specular=0"};
+            "--height", std::to_string(kSize), "--set", "material.specular=0", "--set",
+            "render.plan=fixed"};
     if (mode == Mode::Reference) args.insert(args.end(), {"--set", "reference.spp=16"});
     if (mode == Mode::Atlas) args.insert(args.end(), {"--set", "atlas.resolution=256"});
     return args;

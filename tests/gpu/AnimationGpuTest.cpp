@@ -154,7 +154,7 @@ int texelsInside(const atlas::AtlasGi& gi, const scene::Aabb& box) {
 // setPose, the atlas G-buffer's cube texels are where the cube now is, none are left where it
 // was, and the cube's indirect light is gathered there.
 TEST_F(AnimationGpuTest, AtlasFollowsTheAnimatedCube) {
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.atlas.resolution = 256;
     settings.atlas.samples = 16;
     settings.atlas.cache = false;

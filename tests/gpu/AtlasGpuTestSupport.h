@@ -18,7 +18,7 @@ namespace gi::test {
 // Small atlases and sample counts keep each test to seconds on llvmpipe; the disk cache is
 // off so tests never touch the user's cache directory.
 inline Settings atlasSettings(int resolution = 256, int samples = 64) {
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.atlas.resolution = resolution;
     settings.atlas.samples = samples;
     settings.atlas.cache = false;

@@ -44,7 +44,7 @@ scene::Scene loadCornell(std::optional<glm::vec3> lightPosition) {
 }
 
 Settings atlasSettings(int samples, int estimator, int visibility) {
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.specular = 0.0f; // the reference is Lambertian
     settings.atlas.resolution = kAtlasResolution;
     settings.atlas.samples = samples;

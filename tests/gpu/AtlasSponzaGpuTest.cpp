@@ -57,7 +57,7 @@ TEST_F(AtlasSponzaGpuTest, IndirectEnergyAgainstTheReference) {
 
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.specular = 0.0f; // the reference is Lambertian
     settings.atlas.cache = false; // tests never touch the user's cache directory
     settings.atlas.progressive = false;

@@ -97,7 +97,7 @@ TEST_F(MemoryReportGpuTest, ReportIsWhatTheGlHoldsInEveryMode) {
         const std::string what = std::string(render::giModeName(c.mode)) +
                 (c.atlasVisibility == ATLAS_VISIBILITY_VOXEL ? " with voxel visibility" : "");
         {
-            Settings settings;
+            Settings settings = thesisAllocation();
             settings.atlas.resolution = 128;
             settings.atlas.samples = 64;
             settings.atlas.cache = false;

@@ -61,7 +61,7 @@ TEST_F(ResourcePlanGpuTest, CornellBoxAllocatesItsPlan) {
     adaptive.plan = PLAN_ADAPTIVE;
     adaptive.atlas.cache = false;
     expectAllocationMatchesPlan(box, adaptive);
-    Settings fixed;
+    Settings fixed = thesisAllocation();
     fixed.atlas.resolution = 256;
     fixed.atlas.cache = false;
     expectAllocationMatchesPlan(box, fixed);

@@ -71,7 +71,7 @@ private:
 };
 
 Settings withCache(bool cache) {
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.specular = 0.0f;
     settings.voxel.cache = cache;
     return settings;

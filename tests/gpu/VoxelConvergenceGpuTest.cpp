@@ -158,7 +158,7 @@ TEST_F(VoxelConvergenceGpuTest, RaisingResolutionNeverRaisesTheError) {
     std::vector<Score> scores;
     const int resolutions[] = {16, 32, 64};
     for (int v : resolutions) {
-        Settings settings;
+        Settings settings = thesisAllocation();
         settings.specular = 0.0f;
         settings.voxel.resolution = v;
         scores.push_back(scoreSetting(settings));
@@ -177,7 +177,7 @@ TEST_F(VoxelConvergenceGpuTest, RaisingTraceScaleNeverRaisesTheError) {
     ASSERT_FALSE(cornellTruth().indirect.empty());
     std::vector<Score> scores;
     for (float scale : {0.25f, 0.5f, 1.0f}) {
-        Settings settings;
+        Settings settings = thesisAllocation();
         settings.specular = 0.0f;
         settings.voxel.traceScale = scale;
         scores.push_back(scoreSetting(settings));

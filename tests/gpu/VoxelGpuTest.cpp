@@ -1,6 +1,6 @@
-// Voxel cone tracing on a real context, stage by stage. Expected values come from the
-// scene's geometry and radiometry (piglit-style probes), plus golden images of the Cornell
-// box's debug views.
+// Voxel cone tracing on a real context, stage by stage, on the thesis' allocation (three
+// camera-centred levels, render.plan=fixed). Expected values come from the scene's geometry and
+// radiometry (piglit-style probes), plus golden images of the Cornell box's debug views.
 #include "GpuTest.h"
 #include "ImageCompare.h"
 #include "TestScenes.h"
@@ -88,7 +88,7 @@ class VoxelGpuTest : public GpuTest {};
 // nothing is occupied farther than one voxel from a surface.
 TEST_F(VoxelGpuTest, CornellSurfacesCoverTheirVoxels) {
     const scene::Scene scene = loadCornellBox();
-    VoxelFrame frame(scene, Settings{}, {32, 32});
+    VoxelFrame frame(scene, thesisAllocation(), {32, 32});
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
 
@@ -155,7 +155,7 @@ TEST_F(VoxelGpuTest, PlaneUnderDirectionalLightHasAnalyticIrradiance) {
     const float expectedE = sun.intensity * -sun.direction.y;
 
     for (const bool fragmentMean : {true, false}) {
-        Settings settings;
+        Settings settings = thesisAllocation();
         settings.voxel.injectFragmentMean = fragmentMean;
         settings.voxel.injectResolution = fragmentMean ? 0 : 1024;
         VoxelFrame frame(scene, settings, {32, 32});
@@ -203,7 +203,7 @@ TEST_F(VoxelGpuTest, PropagationConservesCoverageWeightedColour) {
     scene::Scene inside = scene;
     // From the box's centre with a 0.3 m finest level, the box straddles all three levels.
     inside.cameras[0] = lookAtCamera({0.278f, 0.27f, -0.28f}, {0.278f, 0.27f, -0.6f}, 60.0f);
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.voxel.extent = 0.3f;
     settings.voxel.coverageMaxAxis = false;
     VoxelFrame frame(inside, settings, {32, 32});
@@ -242,7 +242,7 @@ TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
     // 0.2 m above the square: the finer levels around the camera reach it too.
     scene.cameras.push_back(lookAtCamera({0.0f, 0.2f, 0.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
     scene::addDefaults(scene);
-    VoxelFrame frame(scene, Settings{}, {32, 32});
+    VoxelFrame frame(scene, thesisAllocation(), {32, 32});
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
     const auto normal = readVolume(frame.manager().textures().normal, volume);
@@ -279,7 +279,7 @@ TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
 // of its coverage (1%, half-float sums).
 TEST_F(VoxelGpuTest, PyramidConservesTheCoarsestLight) {
     const scene::Scene scene = loadCornellBox();
-    VoxelFrame frame(scene, Settings{}, {32, 32});
+    VoxelFrame frame(scene, thesisAllocation(), {32, 32});
     const voxel::VoxelTextures& textures = frame.manager().textures();
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(textures.albedo, volume);
@@ -326,7 +326,7 @@ TEST_F(VoxelGpuTest, SpinlockAveragesUnderHeavyContention) {
     }
     scene.cameras.push_back(lookAtCamera({0.0f, 1.0f, 0.01f}, {0.0f, 0.0f, 0.0f}, 60.0f));
     scene::addDefaults(scene);
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.voxel.resolution = 4;
     settings.voxel.levels = 1;
     settings.voxel.multiplier = 16;
@@ -350,7 +350,7 @@ TEST_F(VoxelGpuTest, SpinlockAveragesUnderHeavyContention) {
 
 TEST_F(VoxelGpuTest, MemoryMatchesAllocationAndThesisBudget) {
     const scene::Scene scene = loadCornellBox();
-    VoxelFrame frame(scene, Settings{}, {32, 32});
+    VoxelFrame frame(scene, thesisAllocation(), {32, 32});
     // The report reads what was allocated (gl/MemoryRegistry.h).
     std::size_t volumeBytes = 0;
     for (const char* volume : {"voxel/albedo", "voxel/normal", "voxel/irradiance", "voxel/helper",
@@ -368,7 +368,7 @@ TEST_F(VoxelGpuTest, MemoryMatchesAllocationAndThesisBudget) {
 // quarters in the bottom rows of the classic view.
 TEST_F(VoxelGpuTest, CornellFloorBleedsWallColours) {
     const scene::Scene scene = loadCornellBox();
-    VoxelFrame frame(scene, Settings{}, {96, 96}, render::OutputComponent::Indirect);
+    VoxelFrame frame(scene, thesisAllocation(), {96, 96}, render::OutputComponent::Indirect);
     const core::Image image = frame.image();
     ASSERT_TRUE(core::allFinite(image));
     auto regionMean = [&](int x0, int x1, int y0, int y1) {
@@ -396,7 +396,7 @@ TEST_F(VoxelGpuTest, OffscreenWallStillLightsTheFloor) {
         // 20 degrees wide from 25 cm above: the view spans +-5 cm around the point, which is
         // 6 cm from the wall, so no wall is in the picture.
         scene.cameras[0] = lookAtCamera(floorPoint + glm::vec3(0.0f, 0.25f, 0.17f), floorPoint, 20.0f);
-        Settings settings;
+        Settings settings = thesisAllocation();
         settings.specular = 0.0f;
         constexpr int kSize = 32;
         VoxelFrame frame(scene, settings, {kSize, kSize}, render::OutputComponent::Indirect);
@@ -424,7 +424,7 @@ TEST_F(VoxelGpuTest, OffscreenWallStillLightsTheFloor) {
 // RMSE is printed for the record (voxel artefacts keep it far above the reference's noise).
 TEST_F(VoxelGpuTest, CornellIndirectEnergyMatchesReference) {
     const scene::Scene scene = loadCornellBox();
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.specular = 0.0f;
     constexpr int kSize = 96;
     VoxelFrame frame(scene, settings, {kSize, kSize}, render::OutputComponent::Indirect);
@@ -455,7 +455,7 @@ class VoxelGoldenGpuTest : public GpuTest, public ::testing::WithParamInterface<
 
 TEST_P(VoxelGoldenGpuTest, CornellView) {
     const scene::Scene scene = loadCornellBox();
-    Settings settings;
+    Settings settings = thesisAllocation();
     settings.voxel.debugLevel = GetParam().level;
     VoxelFrame frame(scene, settings, {128, 128}, GetParam().output);
     const core::Image image = frame.image();

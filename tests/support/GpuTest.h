@@ -30,6 +30,15 @@ protected:
     std::unique_ptr<platform::GlContext> mContext;
 };
 
+// The default settings with render.plan=fixed: the thesis' allocation (voxel.cascades levels
+// around the camera, atlas.resolution texels) that tests of those settings, their probes and
+// goldens are written against; the default plan sizes both from the scene.
+inline Settings thesisAllocation() {
+    Settings settings;
+    settings.plan = PLAN_FIXED;
+    return settings;
+}
+
 struct RenderRequest {
     std::string scenePath;            // relative paths are taken from the source tree
     int width = 64, height = 64;

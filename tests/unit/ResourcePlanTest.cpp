@@ -25,6 +25,10 @@ Settings adaptive(int resolution) {
     return s;
 }
 
+TEST(ResourcePlan, AdaptiveIsTheDefault) {
+    EXPECT_EQ(Settings{}.plan, PLAN_ADAPTIVE);
+}
+
 TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
     const scene::Scene box = test::loadCornellBox();
     const ResourcePlan plan = planResources(box, box.lights, adaptive(32), startEye(box));
@@ -38,7 +42,7 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
             << "32 bytes per voxel plus the radiance pyramid of the coarsest level";
     // The fixed thesis allocation: three camera-centred levels, the finest of which hold only
     // the air between the camera and the box.
-    Settings fixed;
+    const Settings fixed = test::thesisAllocation();
     const ResourcePlan thesis = planResources(box, box.lights, fixed, startEye(box));
     EXPECT_EQ(thesis.voxel.levels, 3);
     EXPECT_FALSE(thesis.voxel.sceneCentred);
@@ -92,7 +96,7 @@ TEST(ResourcePlan, ApplyWritesThePlanIntoTheSettings) {
     EXPECT_TRUE(s.voxel.sceneCentred);
     EXPECT_FLOAT_EQ(s.voxel.extent, plan.voxel.finestExtent);
     EXPECT_EQ(s.atlas.resolution, plan.atlasResolution);
-    Settings fixed;
+    Settings fixed = test::thesisAllocation();
     fixed.voxel.levels = 5;
     const Settings unchanged = applyPlan(fixed, planResources(box, box.lights, fixed, startEye(box)));
     EXPECT_EQ(unchanged.voxel.levels, 5);
@@ -137,7 +141,8 @@ TEST(ResourcePlan, LightsThatCannotReachTheSceneAreLeftOut) {
             (std::vector<int>{0, 3, 4, 5}));
     scene::Scene box = test::loadCornellBox();
     box.lights.push_back(dark);
-    const ResourcePlan fixed = planResources(box, box.lights, Settings{}, startEye(box));
+    const ResourcePlan fixed =
+            planResources(box, box.lights, test::thesisAllocation(), startEye(box));
     EXPECT_EQ(fixed.lights, (std::vector<int>{0}));
 }
 
