@@ -120,8 +120,8 @@ std::string usage(Command command) {
                "converged with voxel visibility), scored against the one-bounce path tracer.\n"
                "Writes results-accuracy.md, accuracy.csv and images/accuracy_*.png to --out-dir\n"
                "(default docs). full: 128x128 (Sponza 192x108), 1024 spp references; quick (CI):\n"
-               "64x64 (128x72), 256 spp, no converged atlas in Sponza. --scene picks suite scenes\n"
-               "by name.\n";
+               "64x64 (128x72), 256 spp, the converged atlas at 400 samples and not in Sponza.\n"
+               "--scene picks suite scenes by name.\n";
     default:
         return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"

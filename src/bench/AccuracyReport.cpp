@@ -267,17 +267,24 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
     for (const std::string& note : info.notes) out << "Note: " << note << "\n\n";
 
     targetsSection(out, scores);
+    // The dark room has no indirect light to be relative to: its score is the leak.
+    auto scored = [](auto cell) {
+        return [cell](const SuiteScore& s) {
+            return s.kind == SceneKind::LeakDark ? std::string("(leak)") : cell(s);
+        };
+    };
     out << "## Relative RMSE of the indirect component\n\n"
            "(noise: marked * where the reference's noise exceeds a fifth of the error)\n\n";
-    gridTable(out, results, scores, [](const SuiteScore& s) {
+    gridTable(out, results, scores, scored([](const SuiteScore& s) {
         return number(s.relRmseIndirect) + (s.noiseLimited ? "*" : "");
-    });
+    }));
     out << "## Indirect energy ratio (ours / reference)\n\n";
-    gridTable(out, results, scores, [](const SuiteScore& s) { return number(s.energyIndirect); });
+    gridTable(out, results, scores,
+            scored([](const SuiteScore& s) { return number(s.energyIndirect); }));
     out << "## Final image: relative RMSE, and its ratio to the no-GI image's\n\n";
-    gridTable(out, results, scores, [](const SuiteScore& s) {
+    gridTable(out, results, scores, scored([](const SuiteScore& s) {
         return number(s.relRmseFinal) + " (x" + number(s.finalRatioToNoGi, 2) + ")";
-    });
+    }));
     if (const SuiteSceneResult* dark = findKind(results, SceneKind::LeakDark)) {
         const SuiteSceneResult* lit = findKind(results, SceneKind::LeakLit);
         if (lit) {
