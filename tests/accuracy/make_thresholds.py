@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Writes tests/accuracy/AccuracyThresholds.inc from the accuracy.csv of a
+`voxatlas bench --suite quick` run: each score's threshold is the measured distance from the
+truth plus a margin for the run-to-run spread (10 % of the value, plus 0.01).
+
+Run it after a change that improves scores, to hold the suite to them:
+
+    build/voxatlas bench --suite quick --out-dir /tmp/suite
+    python3 tests/accuracy/make_thresholds.py /tmp/suite/accuracy.csv
+
+It refuses to loosen a threshold (a score that got worse is a regression to fix, not a new
+threshold) unless --accept-worse names the reason, which goes into the file.
+"""
+import argparse
+import csv
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, "AccuracyThresholds.inc")
+CONFIGURATIONS = ("voxel", "voxel quality", "atlas", "atlas converged")
+
+
+def margin(value):
+    return round(value * 1.10 + 0.01, 3)
+
+
+def read_existing():
+    if not os.path.exists(OUT):
+        return {}
+    existing = {}
+    pattern = re.compile(r'\{"([^"]+)", "([^"]+)", ([0-9.]+), ([0-9.]+)(?:, ([0-9.]+))?\}')
+    for match in pattern.finditer(open(OUT).read()):
+        scene, configuration, rmse, energy, leak = match.groups()
+        existing[(scene, configuration)] = (float(rmse), float(energy),
+                                            float(leak) if leak else None)
+    return existing
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("csv")
+    parser.add_argument("--accept-worse", metavar="REASON")
+    args = parser.parse_args()
+    existing = read_existing()
+    rows, looser = [], []
+    for row in csv.DictReader(open(args.csv)):
+        if row["configuration"] not in CONFIGURATIONS or row["available"] != "1":
+            continue
+        key = (row["scene"], row["configuration"])
+        if row["kind"] == "leak-dark":
+            new = (0.0, 0.0, margin(float(row["leak"])))
+        else:
+            new = (margin(float(row["rel_rmse_indirect"])),
+                   margin(abs(float(row["energy_indirect"]) - 1.0)), None)
+        old = existing.get(key)
+        if old and any(n is not None and o is not None and n > o for n, o in zip(new, old)):
+            looser.append(f"{key[0]} / {key[1]}: {old} -> {new}")
+        rows.append((key, new))
+    if looser and not args.accept_worse:
+        sys.exit("worse than the current thresholds (fix the regression, or "
+                 "--accept-worse REASON):\n  " + "\n  ".join(looser))
+    lines = ["// Written by tests/accuracy/make_thresholds.py from a `voxatlas bench --suite quick`",
+             "// run; do not edit by hand. {scene, configuration, max rel. RMSE, max |energy - 1|",
+             "// [, max leak]}"]
+    if looser:
+        lines.append(f"// Accepted worse: {args.accept_worse}")
+    lines.append("const Threshold kThresholds[] = {")
+    for (scene, configuration), (rmse, energy, leak) in rows:
+        tail = f", {leak}" if leak is not None else ""
+        lines.append(f'        {{"{scene}", "{configuration}", {rmse}, {energy}{tail}}},')
+    lines.append("};")
+    open(OUT, "w").write("\n".join(lines) + "\n")
+    print(f"wrote {OUT}: {len(rows)} thresholds")
+
+
+if __name__ == "__main__":
+    main()
