@@ -48,7 +48,8 @@
                                         // as BIND_TEX_VOXEL_DIRECTIONAL
 #define BIND_TEX_VOXEL_DIRECTIONAL  15  // sampler3D rgba16f (6v, v, v*l), voxel.anisotropic:
                                         // x-slab f = the voxel seen from face f (VOXEL_FACE_*),
-                                        // rgb = rho E x opacity (W/m^2), a = opacity
+                                        // rgb = rho E x a (W/m^2), a = how much of the
+                                        // face the surfaces facing it cover
 
 // Texture units of the atlas passes (gi/atlas). Atlas layers are R x R, texel (i, j) covers
 // atlas coordinates [i, i+1) x [j, j+1) / R; alpha 0 = no surface.

@@ -42,11 +42,11 @@
 // crossing ray through. The pyramid holds light only: its coverage would halve a one-voxel
 // wall's opacity per mip and let cones through walls.
 //
-// Anisotropic voxels (voxel.anisotropic, voxel_directional.glsl): the light a cone meets, and
-// on finer levels the opacity too, are read from the three faces the cone sees, weighted by
-// its direction's squared components (which sum to 1), from the directional voxels and the
-// directional pyramid; coverage for the coarsest level's walk and the facing test stay
-// isotropic.
+// Anisotropic voxels (voxel.anisotropic, voxel_directional.glsl): the light a cone meets is
+// read from the three faces the cone sees, weighted by its direction's squared components
+// (which sum to 1), from the directional voxels and the directional pyramid, and a voxel
+// faces away when none of those faces holds a surface facing the cone. Opacity stays the
+// isotropic coverage (directional_build.comp says why).
 #include "../common/constants.glsl"
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
@@ -92,7 +92,7 @@ VoxelSample readLevel(vec3 p, int level) {
 bool anisotropicVoxels() { return voxel.grid.z != 0; }
 
 // The directional voxels of `level` around p as a cone travelling along dir sees them:
-// rgb = rho E x opacity, a = opacity.
+// rgb = rho E x a, a = facing coverage.
 vec4 readDirectional(vec3 p, int level, vec3 dir) {
     vec3 tc = voxelTexcoord(p, level);
     vec3 weight = dir * dir;

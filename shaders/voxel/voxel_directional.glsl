@@ -1,7 +1,7 @@
 // Anisotropic voxels (voxel.anisotropic; Crassin et al. 2011, "Interactive Indirect
 // Illumination Using Voxel Cone Tracing", section 3.2): a voxel is stored as seen from each
-// of its 6 faces (VOXEL_FACE_*), rgb = rho E x opacity, a = opacity, both premultiplied as
-// the isotropic textures are. A coarser voxel seen from a face is its 2x2x2 children
+// of its 6 faces (VOXEL_FACE_*), rgb = rho E x a, a = how much of the face the surfaces
+// facing it cover (directional_build.comp), premultiplied as the isotropic textures are. A coarser voxel seen from a face is its 2x2x2 children
 // composited front to back along that face's axis, column by column, averaged over the 4
 // columns: a wall whose lit side faces away from a face shows that face its dark side, where
 // an average of the children would show the mean of both sides.

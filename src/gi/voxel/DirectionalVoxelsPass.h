@@ -4,7 +4,7 @@
 // every face; propagated ones composite their finer children front to back per face.
 // Inputs : VoxelTextures albedo (rgb x coverage, a = coverage) and irradiance (E x coverage,
 //          W/m^2) of every level, propagated; VoxelUniforms.
-// Outputs: VoxelTextures directional, every level (rgb = rho E x opacity, a = opacity).
+// Outputs: VoxelTextures directional, every level (rgb = rho E x a, a = facing coverage).
 #pragma once
 
 #include "gi/voxel/VoxelTextures.h"

@@ -27,7 +27,7 @@ struct VoxelTextures {
                               // rgb = rho E x coverage (W/m^2), a = coverage; anisotropic:
                               // 6 x-slabs, one per face, as `directional`
     gl::Texture directional;  // anisotropic only, (6v, v, v*l): x-slab f = the voxel seen from
-                              // face f (VOXEL_FACE_*), rgb = rho E x opacity, a = opacity
+                              // face f (VOXEL_FACE_*), rgb = rho E x a, a = facing coverage
     int resolution = 0, levels = 0;
     bool anisotropic = false;
 
