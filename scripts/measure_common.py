@@ -25,7 +25,7 @@ IMAGES = os.path.join(DOCS, "images")
 GEOMETRY_COVERAGE = 0.999              # reference::kGeometryCoverage
 # The cascade's textures (VoxelTextures) in the memory report.
 VOXEL_CASCADE = ("voxel/albedo", "voxel/normal", "voxel/irradiance", "voxel/helper",
-                 "voxel/lock", "voxel/pyramid")
+                 "voxel/lock", "voxel/pyramid", "voxel/directional")
 # The pages these scripts write measure the thesis' allocation, so every render starts from
 # render.plan=fixed (the program's default is the adaptive plan); a script's own render.plan
 # setting comes later on the command line and wins.

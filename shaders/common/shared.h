@@ -43,7 +43,13 @@
 #define BIND_TEX_FILTER_SOURCE      8   // sampler2D rgba16f, traced E_ind + view depth
 #define BIND_TEX_VOXEL_PYRAMID      9   // sampler3D rgba16f mipmapped, the coarsest level
                                         // averaged 2^(m+1) voxels per axis at mip m:
-                                        // rgb = rho E x coverage (W/m^2), a = coverage
+                                        // rgb = rho E x coverage (W/m^2), a = coverage;
+                                        // with voxel.anisotropic 6 x-slabs, one per face,
+                                        // as BIND_TEX_VOXEL_DIRECTIONAL
+#define BIND_TEX_VOXEL_DIRECTIONAL  15  // sampler3D rgba16f (6v, v, v*l), voxel.anisotropic:
+                                        // x-slab f = the voxel seen from face f (VOXEL_FACE_*),
+                                        // rgb = rho E x a (W/m^2), a = how much of the
+                                        // face the surfaces facing it cover
 
 // Texture units of the atlas passes (gi/atlas). Atlas layers are R x R, texel (i, j) covers
 // atlas coordinates [i, i+1) x [j, j+1) / R; alpha 0 = no surface.
@@ -73,6 +79,22 @@
 #define BIND_IMG_FILTER_TARGET      5   // rgba16f, filtered E_ind + view depth
 #define BIND_IMG_VOXEL_PYRAMID_SOURCE 6 // rgba16f, pyramid mip m-1 read while mip m is built
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
+#define BIND_IMG_VOXEL_DIRECTIONAL  5   // rgba16f (6v, v, v*l), voxel.anisotropic: while
+                                        // voxelizing and injecting, per face f of a voxel
+                                        // rgb = flux / face area of the surfaces seen from f,
+                                        // a = their area projected onto f / face area; then
+                                        // the directional voxels (the filter target's unit:
+                                        // no pass binds both)
+
+// Faces of an anisotropic voxel: VOXEL_FACE_POS_X is the voxel as seen from +x (by a cone
+// travelling towards -x), face f in x-slab f of the directional textures.
+#define VOXEL_FACE_POS_X            0
+#define VOXEL_FACE_NEG_X            1
+#define VOXEL_FACE_POS_Y            2
+#define VOXEL_FACE_NEG_Y            3
+#define VOXEL_FACE_POS_Z            4
+#define VOXEL_FACE_NEG_Z            5
+#define VOXEL_FACES                 6
 
 #define VOXEL_MAX_LEVELS            8
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
@@ -189,7 +211,9 @@ struct GpuMaterial {                    // std430
 struct VoxelUniforms {                  // std140
     vec4 levelOrigin[VOXEL_MAX_LEVELS]; // xyz = world-space min corner of level k (m),
                                         // w = voxel edge length of level k (m)
-    ivec4 grid;                         // x = resolution v, y = level count l, zw = 0
+    ivec4 grid;                         // x = resolution v, y = level count l, z = 1 for
+                                        // anisotropic voxels (voxel.anisotropic), w = the
+                                        // widest pyramid mip cone tracing reads (-1 = all)
     vec4 trace;                         // x = cone half-angle tan, y = max distance (m),
                                         // z = step factor (x cone diameter), w = 1 to apply
                                         // the thesis' 1/(1+d^2) falloff

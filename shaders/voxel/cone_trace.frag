@@ -33,23 +33,33 @@
 // it). The light met there is the
 // reflected light over the cone's footprint: the filtered voxels while the cone is narrower
 // than they are, then the pyramid above the coarsest level (RadiancePyramidPass.h) at the
-// cone's width.
+// cone's width. voxel.pyramid_mips caps that width: a texel's light is averaged across its
+// whole footprint, so a wide one straddling a wall shows a cone in one room the other room's
+// light (anisotropic texels hide what lies behind along the cone's axis, not beside it).
 // Reading one voxel instead made the cone a ray that sees a small bright patch (the ceiling
 // over a light) in full or not at all, which finer voxels alias ever more; and filtered
 // coverage spread each wall over two half-opaque voxel layers that let a quarter of a
 // crossing ray through. The pyramid holds light only: its coverage would halve a one-voxel
 // wall's opacity per mip and let cones through walls.
+//
+// Anisotropic voxels (voxel.anisotropic, voxel_directional.glsl): the light a cone meets is
+// read from the three faces the cone sees, weighted by its direction's squared components
+// (which sum to 1), from the directional voxels and the directional pyramid, and a voxel
+// faces away when none of those faces holds a surface facing the cone. Opacity stays the
+// isotropic coverage (directional_build.comp says why).
 #include "../common/constants.glsl"
 #include "../common/frame.glsl"
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "../common/voxel_cascade.glsl"
 #include "../common/voxel_plane.glsl"
+#include "voxel_directional.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelAlbedoTexture;
 layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTexture;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
+layout(binding = BIND_TEX_VOXEL_DIRECTIONAL) uniform sampler3D voxelDirectionalTexture;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -60,6 +70,9 @@ const int kMaxSteps = 1024;
 // The axis meets a flat voxel's plane up to this many voxel sizes, measured along the axis,
 // before or after its path through the voxel.
 const float kAxisCrossingSlack = 0.01;
+// Anisotropic voxels whose faces towards a cone are covered less than this hold nothing that
+// faces it.
+const float kNothingFaces = 1e-3;
 
 struct VoxelSample {
     vec4 albedo;       // rgb = albedo x coverage, a = coverage
@@ -76,17 +89,80 @@ VoxelSample readLevel(vec3 p, int level) {
     return s;
 }
 
+bool anisotropicVoxels() { return voxel.grid.z != 0; }
+
+// The directional voxels of `level` around p as a cone travelling along dir sees them:
+// rgb = rho E x a, a = facing coverage.
+vec4 readDirectional(vec3 p, int level, vec3 dir) {
+    vec3 tc = voxelTexcoord(p, level);
+    vec3 weight = dir * dir;
+    vec4 sum = vec4(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        float face = float(faceSeenAlong(dir, axis));
+        sum += weight[axis] * texture(voxelDirectionalTexture,
+                vec3((tc.x + face) / float(VOXEL_FACES), tc.yz));
+    }
+    return sum;
+}
+
+// How much of the voxel at `texel` (cascade texel, slab included) faces a cone along dir:
+// the opacity of its faces the cone sees (voxel_directional.glsl).
+float facingCone(ivec3 texel, vec3 dir) {
+    float sum = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        sum += dir[axis] * dir[axis] *
+                texelFetch(voxelDirectionalTexture, directionalTexel(texel, faceSeenAlong(dir, axis)),
+                        0).a;
+    }
+    return sum;
+}
+
+// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3) as seen along
+// dir; each face's read stays half a texel inside its slab so filtering never mixes faces.
+// The read is centred half a texel back along the cone (as in coarsestLight).
+vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir) {
+    float slab = float(max((voxelResolution() / 2) >> mip, 1));
+    vec3 local = clamp(uvw * slab, vec3(0.5), vec3(slab - 0.5));
+    vec3 weight = dir * dir;
+    vec4 sum = vec4(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        float face = float(faceSeenAlong(dir, axis));
+        vec3 tc = vec3((local.x + face * slab) / (slab * float(VOXEL_FACES)), local.yz / slab);
+        sum += weight[axis] * textureLod(voxelPyramidTexture, tc, float(mip));
+    }
+    return sum;
+}
+
+// The pyramid at a fractional mip: readDirectionalPyramid's clamp differs per mip, so the two
+// mips are read apart and blended here.
+vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
+    if (!anisotropicVoxels()) return textureLod(voxelPyramidTexture, uvw, lod);
+    int mip = int(floor(lod));
+    vec4 lower = readDirectionalPyramid(uvw, mip, dir);
+    float blend = lod - float(mip);
+    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, dir), blend) : lower;
+}
+
 // Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
 // around p on the coarsest level: the filtered voxels while the cone is narrower than they
 // are, then the pyramid mip whose texels match the diameter (blended over the first octave).
-vec3 coarsestLight(vec3 p, float diameter) {
+vec3 coarsestLight(vec3 p, float diameter, vec3 dir) {
     int coarsest = voxelLevels() - 1;
     float spread = log2(diameter / levelVoxelSize(coarsest));
     vec4 wide = vec4(0.0);
     if (spread > 0.0) {
-        wide = textureLod(voxelPyramidTexture, (p - levelOrigin(coarsest)) / levelExtent(coarsest),
-                max(spread - 1.0, 0.0));
+        float mip = max(spread - 1.0, 0.0);
+        if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
+        wide = pyramidAt((p - levelOrigin(coarsest)) / levelExtent(coarsest), mip, dir);
         if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
+    }
+    if (anisotropicVoxels()) {
+        // Centred half a voxel back along the cone, the filtered read blends the voxel met
+        // with the one in front of it, not with the one behind: behind a wall, that one
+        // shows the other room's light.
+        vec4 seen = readDirectional(p, coarsest, dir);
+        vec3 light = seen.rgb / max(seen.a, 1e-4);
+        return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
     }
     vec3 tc = voxelTexcoord(p, coarsest);
     vec4 albedo = texture(voxelAlbedoTexture, tc);
@@ -152,8 +228,12 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
                 float cosine = dot(dir, plane.xyz);
                 // A voxel facing away from the cone is skipped, as in the thesis: its surface
                 // sends no light this way, and its occlusion would mostly be the cone's own
-                // surface seen from behind (the voxel layer the cone starts in).
-                if (cosine > 0.0) continue;
+                // surface seen from behind (the voxel layer the cone starts in). Anisotropic
+                // voxels tell it per face; a mean normal cannot where surfaces face both ways.
+                if (anisotropicVoxels() ? facingCone(texel, dir) <= kNothingFaces
+                                        : cosine > 0.0) {
+                    continue;
+                }
                 if (voxelHoldsOnePlane(plane, coarsest, voxel.modes.w != 0.0)) {
                     // One flat surface: the axis meets it where it crosses its plane, or not
                     // at all in this voxel, and crossing it is an occlusion of `coverage`.
@@ -180,7 +260,8 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
             corrected = crossed ? coverage
                     : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
             hit = clamp(hit, 0.0, path);
-            reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest));
+            reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest),
+                    dir);
         } else {
             ++steps;
             float path = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *
@@ -196,10 +277,19 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
                 voxelSize = mix(voxelSize, levelVoxelSize(level + 1), blend);
             }
             float coverage = clamp(s.albedo.a, 0.0, 1.0);
-            // Facing away: skipped as above.
-            if (coverage <= 0.0 || dot(s.normal, dir) > 0.0) continue;
+            if (coverage <= 0.0) continue;
+            if (anisotropicVoxels()) {
+                // Facing away: nothing in the voxels faces the cone.
+                vec4 seen = readDirectional(p, level, dir);
+                if (blend > 0.0) seen = mix(seen, readDirectional(p, level + 1, dir), blend);
+                if (seen.a <= kNothingFaces) continue;
+                reflected = seen.rgb / seen.a;
+            } else {
+                // Facing away: skipped as above.
+                if (dot(s.normal, dir) > 0.0) continue;
+                reflected = s.albedo.rgb * s.irradiance / (coverage * coverage);
+            }
             corrected = 1.0 - pow(1.0 - min(coverage, 0.9999), path / voxelSize);
-            reflected = s.albedo.rgb * s.irradiance / (coverage * coverage);
         }
         vec3 light = reflected / PI * corrected;
         if (voxel.trace.w != 0.0) light /= 1.0 + dist * dist; // the thesis' falloff

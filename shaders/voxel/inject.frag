@@ -12,6 +12,8 @@
 //                A = footprint / cos(theta_surface)                           (orthographic),
 // and the voxel's irradiance is the summed flux over the surface area voxelization measured:
 // the area-weighted mean irradiance of the surfaces in the voxel, lit or not.
+// With voxel.anisotropic the flux is also summed per face of the voxel, projected onto the
+// faces the lit side faces (directional_build.comp).
 #include "../common/voxel_cascade.glsl"
 
 layout(early_fragment_tests) in;
@@ -19,6 +21,7 @@ layout(early_fragment_tests) in;
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
+#include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
 
 layout(location = LOC_INJECT_AXIS) uniform vec4 viewAxis;   // w = 1: orthographic
@@ -26,6 +29,7 @@ layout(location = LOC_INJECT_FOOTPRINT) uniform float pixelFootprint;
 layout(location = LOC_INJECT_LIGHT) uniform int lightIndex;
 
 layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) coherent uniform image3D voxelHelper;
+layout(binding = BIND_IMG_VOXEL_DIRECTIONAL, rgba16f) coherent uniform image3D voxelDirectional;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -62,5 +66,15 @@ void main() {
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 previous = imageLoad(voxelHelper, texel);
         imageStore(voxelHelper, texel, roundToHalf(vec4(previous.rgb + flux, 1.0), dither));
+        if (voxel.grid.z != 0) {
+            for (int face = 0; face < VOXEL_FACES; ++face) {
+                float projection = faceProjection(n, face);
+                if (projection <= 0.0) continue;
+                ivec3 faceTexel = directionalTexel(texel, face);
+                vec4 sums = imageLoad(voxelDirectional, faceTexel);
+                imageStore(voxelDirectional, faceTexel,
+                        roundToHalf(sums + vec4(flux * projection, 0.0), dither));
+            }
+        }
     })
 }

@@ -3,15 +3,19 @@
 // and sums the surface area the fragments stand for (in units of the voxel's face area), so
 // light injection can turn flux into the voxel's mean irradiance. The normal's w averages
 // the surface's signed distance from the voxel centre along the normal (in voxel sizes), so
-// a voxel of one flat surface knows where in it that surface lies.
+// a voxel of one flat surface knows where in it that surface lies. With voxel.anisotropic the
+// area is also summed per face of the voxel, projected onto the faces the surface faces
+// (directional_build.comp).
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "../common/voxel_cascade.glsl"
+#include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
 
 layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) coherent uniform image3D voxelAlbedo;
 layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) coherent uniform image3D voxelNormal;
 layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) coherent uniform image3D voxelIrradiance;
+layout(binding = BIND_IMG_VOXEL_DIRECTIONAL, rgba16f) coherent uniform image3D voxelDirectional;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -37,5 +41,15 @@ void main() {
         imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, planeOffset), dither));
         vec4 irradiance = imageLoad(voxelIrradiance, texel);
         imageStore(voxelIrradiance, texel, roundToHalf(vec4(irradiance.rgb, irradiance.a + area), dither));
+        if (voxel.grid.z != 0) {
+            for (int face = 0; face < VOXEL_FACES; ++face) {
+                float projection = faceProjection(n, face);
+                if (projection <= 0.0) continue;
+                ivec3 faceTexel = directionalTexel(texel, face);
+                vec4 sums = imageLoad(voxelDirectional, faceTexel);
+                imageStore(voxelDirectional, faceTexel,
+                        roundToHalf(sums + vec4(0.0, 0.0, 0.0, area * projection), dither));
+            }
+        }
     })
 }

@@ -162,6 +162,13 @@ const std::vector<SettingSpec>& settingSpecs() {
         boolSetting("voxel.coarse_planes",
                 "cone tracing meets a coarser level's voxel at its mean plane (0 = only level 0's)",
                 [](Settings& s) -> bool& { return s.voxel.coarsePlanes; }),
+        boolSetting("voxel.anisotropic",
+                "six directional values per voxel, filtered front to back per face (Crassin 2011)",
+                [](Settings& s) -> bool& { return s.voxel.anisotropic; }),
+        intSetting("voxel.pyramid_mips",
+                "widest mip of the light pyramid above the coarsest level cone tracing reads "
+                "(-1 = all)",
+                -1, 8, [](Settings& s) -> int& { return s.voxel.pyramidMips; }),
         boolSetting("voxel.scene_centred",
                 "centre the cascade on the scene (finest level holds it) instead of the camera "
                 "(fixed plan)",

@@ -33,6 +33,10 @@ struct VoxelSettings {
                                   // one-voxel wall's opacity per level and loses its light)
     bool coarsePlanes = true;     // voxel.coarse_planes: cone tracing takes a coarser level's
                                   // voxel for one plane (0: only level 0, voxel_plane.glsl)
+    bool anisotropic = false;     // voxel.anisotropic: each voxel as seen from its 6 faces,
+                                  // coarser levels composited front to back per face
+    int pyramidMips = -1;         // voxel.pyramid_mips: widest pyramid mip cone tracing reads
+                                  // (-1 = all; wide texels average across walls)
     bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds
                                   // (finest level holding the scene) instead of the camera
     bool clampCentre = false;     // voxel.clamp_centre: the camera-centred cascade's centre

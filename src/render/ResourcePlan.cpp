@@ -189,7 +189,8 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
     plan.atlasTexelSize = plan.atlasResolution > 0
             ? std::sqrt(plan.surfaceArea / kAtlasFill) / double(plan.atlasResolution)
             : 0.0;
-    plan.voxelMemory = voxel::VoxelTextures::memoryFor(plan.voxel.resolution, plan.voxel.levels);
+    plan.voxelMemory = voxel::VoxelTextures::memoryFor(plan.voxel.resolution, plan.voxel.levels,
+            settings.voxel.anisotropic);
     bool dynamic = false;
     for (const scene::Instance& instance : scene.instances) dynamic |= instance.dynamic;
     if (dynamic && settings.voxel.cache) {

@@ -28,6 +28,9 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.textures.normal.id());
     glBindTextureUnit(BIND_TEX_VOXEL_PYRAMID, in.textures.pyramid.id());
+    if (in.textures.anisotropic) {
+        glBindTextureUnit(BIND_TEX_VOXEL_DIRECTIONAL, in.textures.directional.id());
+    }
     in.scene.drawAll(mProgram.id(), true);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);

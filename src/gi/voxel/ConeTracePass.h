@@ -22,7 +22,8 @@ public:
         const scene::GpuScene& scene;      // world-space triangles, materials
         const gl::Buffer& frameUniforms;   // FrameUniforms, std140: the camera
         const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: placement, cone set-up
-        const VoxelTextures& textures;     // albedo, irradiance, normal, pyramid; propagated
+        const VoxelTextures& textures;     // albedo, irradiance, normal, pyramid (and
+                                           // directional, anisotropic); propagated
     };
     struct Outputs {
         glm::ivec2 size;                   // pixels of indirect(); reallocated when it changes

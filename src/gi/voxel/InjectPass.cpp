@@ -142,6 +142,10 @@ void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& 
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
             glBindImageTexture(BIND_IMG_VOXEL_HELPER, t.helper.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
             glBindImageTexture(BIND_IMG_VOXEL_LOCK, t.lock.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+            if (t.anisotropic) {
+                glBindImageTexture(BIND_IMG_VOXEL_DIRECTIONAL, t.directional.id(), 0, GL_TRUE, 0,
+                        GL_READ_WRITE, GL_RGBA16F);
+            }
             for (; next < in.views.size() && in.views[next].light == light; ++next) {
                 setView(in.views[next]);
                 mTarget.clear();

@@ -5,7 +5,8 @@
 // forced early depth test exact. After each light a compute pass adds the light's mean to
 // the per-voxel sum over lights (the "finalize" step) and the lock counts are cleared.
 // Inputs : GpuScene (geometry, lights), VoxelUniforms, the light views (injectionViews).
-// Outputs: VoxelTextures irradiance (rgb = E summed over lights, W/m^2; a = light count).
+// Outputs: VoxelTextures irradiance (rgb = E summed over lights, W/m^2; a = light count);
+//          anisotropic: directional rgb = flux per face (directional_build.comp).
 #pragma once
 
 #include "gi/voxel/CascadeVolume.h"

@@ -3,10 +3,14 @@
 // over one voxel (the pre-filtering of Crassin et al. 2011, "Interactive Indirect Illumination
 // Using Voxel Cone Tracing", applied above the cascade, whose nested levels stop there).
 // Mip 0 averages 2x2x2 coarsest voxels of rho E x coverage and of coverage; each further mip
-// averages 2x2x2 texels of the previous one. One dispatch per mip.
+// averages 2x2x2 texels of the previous one. One dispatch per mip. With anisotropic voxels
+// every mip holds the 6 faces instead, composited front to back from the directional voxels
+// (directional_pyramid.comp).
 // Inputs : VoxelTextures albedo (rgb x coverage, a = coverage) and irradiance (E x coverage,
 //          W/m^2) of the coarsest level; VoxelUniforms.
-// Outputs: VoxelTextures pyramid, every mip (rgb = rho E x coverage, a = coverage).
+//          Anisotropic: VoxelTextures directional of the coarsest level instead.
+// Outputs: VoxelTextures pyramid, every mip (rgb = rho E x coverage, a = coverage; per face
+//          when anisotropic).
 #pragma once
 
 #include "gi/voxel/VoxelTextures.h"
@@ -32,6 +36,7 @@ public:
 
 private:
     gl::ProgramRef mProgram;
+    gl::ProgramRef mDirectionalProgram;
 };
 
 } // namespace gi::voxel

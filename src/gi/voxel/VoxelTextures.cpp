@@ -1,10 +1,14 @@
 #include "gi/voxel/VoxelTextures.h"
 
+#include "gl/Shared.h"
+
 namespace gi::voxel {
 namespace {
 
-gl::Texture createVolume(GLenum format, int v, int l, const char* label) {
-    gl::Texture texture = gl::createTexture3D(format, {v, v, v * l}, 1, label);
+int facesOf(bool anisotropic) { return anisotropic ? VOXEL_FACES : 1; }
+
+gl::Texture createVolume(GLenum format, glm::ivec3 size, const char* label) {
+    gl::Texture texture = gl::createTexture3D(format, size, 1, label);
     const GLint filter = format == GL_R32UI ? GL_NEAREST : GL_LINEAR;
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, filter);
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, filter);
@@ -16,15 +20,22 @@ gl::Texture createVolume(GLenum format, int v, int l, const char* label) {
 
 } // namespace
 
-void VoxelTextures::allocate(int v, int l) {
+void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels) {
     resolution = v;
     levels = l;
-    albedo = createVolume(GL_RGBA16F, v, l, "voxel/albedo");
-    normal = createVolume(GL_RGBA8_SNORM, v, l, "voxel/normal");
-    irradiance = createVolume(GL_RGBA16F, v, l, "voxel/irradiance");
-    helper = createVolume(GL_RGBA16F, v, l, "voxel/helper");
-    lock = createVolume(GL_R32UI, v, l, "voxel/lock");
-    pyramid = gl::createTexture3D(GL_RGBA16F, glm::ivec3(v / 2), pyramidLevels(), "voxel/pyramid");
+    anisotropic = anisotropicVoxels;
+    const glm::ivec3 size(v, v, v * l);
+    albedo = createVolume(GL_RGBA16F, size, "voxel/albedo");
+    normal = createVolume(GL_RGBA8_SNORM, size, "voxel/normal");
+    irradiance = createVolume(GL_RGBA16F, size, "voxel/irradiance");
+    helper = createVolume(GL_RGBA16F, size, "voxel/helper");
+    lock = createVolume(GL_R32UI, size, "voxel/lock");
+    const int faces = facesOf(anisotropic);
+    directional = anisotropic
+            ? createVolume(GL_RGBA16F, {v * faces, v, v * l}, "voxel/directional")
+            : gl::Texture();
+    pyramid = gl::createTexture3D(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2}, pyramidLevels(),
+            "voxel/pyramid");
     glTextureParameteri(pyramid.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(pyramid.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
@@ -41,16 +52,24 @@ void VoxelTextures::clear() const {
         glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
     }
     glClearTexImage(lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    if (anisotropic) glClearTexImage(directional.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
 }
 
-std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l) {
+std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotropicVoxels) {
     const glm::ivec3 size(v, v, v * l);
-    return {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
+    const int faces = facesOf(anisotropicVoxels);
+    std::vector<gl::MemoryItem> items = {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/normal", gl::textureBytes(GL_RGBA8_SNORM, size, 1)},
             {"voxel/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/helper", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)},
-            {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, glm::ivec3(v / 2), gl::fullMipCount(v / 2))}};
+            {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2},
+                    gl::fullMipCount(v / 2))}};
+    if (anisotropicVoxels) {
+        items.push_back({"voxel/directional",
+                gl::textureBytes(GL_RGBA16F, {v * faces, v, v * l}, 1)});
+    }
+    return items;
 }
 
 } // namespace gi::voxel

@@ -4,6 +4,9 @@
 // 32 bytes per voxel: 3.15 MB at v=32, l=3, under the thesis' 3.46 MB for the same data.
 // Beyond the thesis, a mipmapped RGBA16F pyramid of the coarsest level, (v/2)^3 at mip 0,
 // holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB).
+// With voxel.anisotropic a directional copy of the cascade holds each voxel as seen from each
+// of its 6 faces (RGBA16F, 48 more bytes per voxel: 4.72 MB at v=32, l=3) and the pyramid
+// holds 6 faces too (DirectionalVoxelsPass.h).
 #pragma once
 
 #include "gl/Objects.h"
@@ -21,14 +24,19 @@ struct VoxelTextures {
     gl::Texture helper;       // rgb = current light's mean E, a = 1 where the light wrote
     gl::Texture lock;         // bit 0 = spinlock, bits 1..31 = values averaged
     gl::Texture pyramid;      // mip m: coarsest level averaged over 2^(m+1) voxels per axis,
-                              // rgb = rho E x coverage (W/m^2), a = coverage
+                              // rgb = rho E x coverage (W/m^2), a = coverage; anisotropic:
+                              // 6 x-slabs, one per face, as `directional`
+    gl::Texture directional;  // anisotropic only, (6v, v, v*l): x-slab f = the voxel seen from
+                              // face f (VOXEL_FACE_*), rgb = rho E x a, a = facing coverage
     int resolution = 0, levels = 0;
+    bool anisotropic = false;
 
-    void allocate(int v, int l);
+    void allocate(int v, int l, bool anisotropicVoxels);
     [[nodiscard]] int pyramidLevels() const;   // log2(v): mip 0 is (v/2)^3, the last 1^3
     void clear() const;
     // What allocate(v, l) allocates, before allocating it.
-    [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int v, int l);
+    [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int v, int l,
+            bool anisotropicVoxels);
 };
 
 } // namespace gi::voxel

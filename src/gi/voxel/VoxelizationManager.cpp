@@ -21,7 +21,8 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
     mUniforms = gl::createBuffer(sizeof(shader::VoxelUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT,
             "voxel/uniforms");
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
-           mPropagate.init(shaders, error) && mPyramid.init(shaders, error) &&
+           mPropagate.init(shaders, error) && mDirectional.init(shaders, error) &&
+           mPyramid.init(shaders, error) &&
            mTrace.init(shaders, error) &&
            mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
@@ -41,6 +42,12 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 " exceeds GL_MAX_3D_TEXTURE_SIZE " + std::to_string(max3D);
         return false;
     }
+    if (s.anisotropic && s.resolution * VOXEL_FACES > max3D) {
+        error = "voxel.anisotropic: 6 x voxel.resolution = " +
+                std::to_string(s.resolution * VOXEL_FACES) + " exceeds GL_MAX_3D_TEXTURE_SIZE " +
+                std::to_string(max3D);
+        return false;
+    }
     GLint maxViewport[2] = {0, 0};
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
     if (s.resolution * s.multiplier > std::min(maxViewport[0], maxViewport[1])) {
@@ -48,9 +55,10 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 " exceeds the largest viewport " + std::to_string(maxViewport[0]);
         return false;
     }
-    // 32 bytes per voxel (VoxelTextures.h); refuse before allocating rather than let the
-    // driver fail (or swap) halfway through a frame.
-    const double bytes = 32.0 * std::pow(double(s.resolution), 3.0) * double(s.levels);
+    // 32 bytes per voxel, 80 anisotropic (VoxelTextures.h); refuse before allocating rather
+    // than let the driver fail (or swap) halfway through a frame.
+    const double bytesPerVoxel = s.anisotropic ? 80.0 : 32.0;
+    const double bytes = bytesPerVoxel * std::pow(double(s.resolution), 3.0) * double(s.levels);
     if (!gl::fitsResourceBudget("voxel.resolution " + std::to_string(s.resolution) +
                     " with voxel.cascades " + std::to_string(s.levels) + " (voxel textures)",
                 bytes, error)) {
@@ -61,13 +69,13 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
         mStaticCacheValid = false;
     }
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
-                            s.levels != mSettings.levels;
+                            s.levels != mSettings.levels || s.anisotropic != mSettings.anisotropic;
     const bool replace = reallocate || s.extent != mSettings.extent ||
                          s.sceneCentred != mSettings.sceneCentred ||
                          s.clampCentre != mSettings.clampCentre;
     mSettings = s;
     mConfigured = true;
-    if (reallocate) mTextures.allocate(s.resolution, s.levels);
+    if (reallocate) mTextures.allocate(s.resolution, s.levels, s.anisotropic);
     if (replace) mFinestExtent = s.extent;
     return true;
 }
@@ -78,7 +86,8 @@ void VoxelizationManager::writeUniforms() {
         const int l = std::min(level, mVolume.levels() - 1);
         u.levelOrigin[level] = glm::vec4(mVolume.origin(l), mVolume.voxelSize(l));
     }
-    u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), 0, 0);
+    u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), mSettings.anisotropic ? 1 : 0,
+            mSettings.pyramidMips);
     const float halfAngle = glm::radians(mSettings.coneAngle) * 0.5f;
     const float maxDistance = mSettings.maxDistance > 0.0f
             ? mSettings.maxDistance
@@ -161,7 +170,9 @@ void VoxelizationManager::rememberContent(const GiFrameInputs& in, Content conte
 void VoxelizationManager::voxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     using DrawSet = scene::GpuScene::DrawSet;
     const int rasterSize = mSettings.resolution * mSettings.multiplier;
-    const bool split = mSettings.cache && in.scene.hasDynamicGeometry();
+    // The static cache keeps the isotropic textures only: anisotropic voxels revoxelize all.
+    const bool split = mSettings.cache && !mSettings.anisotropic &&
+                       in.scene.hasDynamicGeometry();
     if (!split) mStaticCache.release();
     if (split && mStaticCacheValid) {
         gl::GpuScope scope(profiler, "voxel/restore-static");
@@ -205,6 +216,7 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
     mInject.execute({in.scene, views, mUniforms, injectResolution, mSettings.injectFragmentMean},
             {mTextures}, profiler);
     mPropagate.execute({mUniforms}, {mTextures}, profiler);
+    if (mTextures.anisotropic) mDirectional.execute({mUniforms, mTextures}, {mTextures}, profiler);
     mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
 }
 

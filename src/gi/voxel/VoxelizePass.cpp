@@ -33,6 +33,10 @@ void VoxelizePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler
     glBindImageTexture(BIND_IMG_VOXEL_NORMAL, out.textures.normal.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA8_SNORM);
     glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, out.textures.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
     glBindImageTexture(BIND_IMG_VOXEL_LOCK, out.textures.lock.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+    if (out.textures.anisotropic) {
+        glBindImageTexture(BIND_IMG_VOXEL_DIRECTIONAL, out.textures.directional.id(), 0, GL_TRUE,
+                0, GL_READ_WRITE, GL_RGBA16F);
+    }
     in.scene.drawAll(mProgram.id(), false, nullptr, in.draws);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glUseProgram(0);

@@ -3,7 +3,8 @@
 // averages its albedo and normal into the finest level containing it, under the voxel's
 // spinlock. Depth test, culling and colour writes are off.
 // Inputs : GpuScene (world-space triangles, materials), VoxelUniforms (cascade placement).
-// Outputs: VoxelTextures albedo (rgb albedo, a = 1 where occupied) and normal, lock counts.
+// Outputs: VoxelTextures albedo (rgb albedo, a = 1 where occupied) and normal, lock counts;
+//          anisotropic: directional a = surface area per face (directional_build.comp).
 #pragma once
 
 #include "gi/voxel/VoxelTextures.h"

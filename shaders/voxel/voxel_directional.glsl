@@ -1,0 +1,50 @@
+// Anisotropic voxels (voxel.anisotropic; Crassin et al. 2011, "Interactive Indirect
+// Illumination Using Voxel Cone Tracing", section 3.2): a voxel is stored as seen from each
+// of its 6 faces (VOXEL_FACE_*), rgb = rho E x a, a = how much of the face the surfaces
+// facing it cover (directional_build.comp), premultiplied as the isotropic textures are. A coarser voxel seen from a face is its 2x2x2 children
+// composited front to back along that face's axis, column by column, averaged over the 4
+// columns: a wall whose lit side faces away from a face shows that face its dark side, where
+// an average of the children would show the mean of both sides.
+#ifndef GI_VOXEL_DIRECTIONAL_GLSL
+#define GI_VOXEL_DIRECTIONAL_GLSL
+
+#include "../common/voxel_cascade.glsl"
+
+// Texel of face `face` of the cascade texel `texel` (level slab included).
+ivec3 directionalTexel(ivec3 texel, int face) {
+    return texel + ivec3(face * voxelResolution(), 0, 0);
+}
+
+// How much of a surface of unit normal n face `face` sees: its area projected onto the
+// face, per unit area (0 when the surface faces away from it).
+float faceProjection(vec3 n, int face) {
+    float c = n[face / 2];
+    return max((face & 1) == 0 ? c : -c, 0.0);
+}
+
+// Premultiplied "over": what lies in front hides what lies behind by its opacity.
+vec4 compositeOver(vec4 front, vec4 back) {
+    return front + (1.0 - clamp(front.a, 0.0, 1.0)) * back;
+}
+
+// The 2x2x2 block (child i at offset (i & 1, (i >> 1) & 1, (i >> 2) & 1)), each child's value
+// as seen from `face`, seen from that face as one voxel.
+vec4 compositeBlock(vec4 children[8], int face) {
+    int step = 1 << (face / 2);   // index offset between a column's two children
+    bool fromPositive = (face & 1) == 0;
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 8; ++i) {
+        if ((i & step) != 0) continue;
+        vec4 low = children[i], high = children[i + step];
+        sum += fromPositive ? compositeOver(high, low) : compositeOver(low, high);
+    }
+    return sum / 4.0;
+}
+
+// The face a cone travelling along `dir` sees of the voxels it meets on `axis`: the one
+// towards where it comes from.
+int faceSeenAlong(vec3 dir, int axis) {
+    return 2 * axis + (dir[axis] > 0.0 ? 1 : 0);
+}
+
+#endif
