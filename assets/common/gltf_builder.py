@@ -209,6 +209,19 @@ class GltfWriter:
         self.doc["accessors"].append(acc)
         return len(self.doc["accessors"]) - 1
 
+    def add_view(self, data, target, stride=None):
+        """A buffer view over `data` (bytes); `stride` for interleaved vertex attributes."""
+        view = self._view(data, target)
+        if stride is not None:
+            self.doc["bufferViews"][view]["byteStride"] = stride
+        return view
+
+    def add_accessor(self, view, component_type, count, kind, extra=None):
+        return self._accessor(view, component_type, count, kind, extra)
+
+    def add_node(self, node):
+        return self._node(node)
+
     def add_material(self, name, rgb, double_sided=False):
         self.material_index[name] = len(self.doc["materials"])
         material = {

@@ -27,7 +27,7 @@ double mebibytes(std::size_t bytes) { return double(bytes) / (1024.0 * 1024.0); 
 // Counts, bounds, recentring and animation of the loaded scene.
 void printContents(const scene::Scene& scene, double loadSeconds) {
     std::printf("scene      %s\n", scene.sourcePath.c_str());
-    std::printf("load time  %.3f s (parse, buffers, texture decoding, validation)\n", loadSeconds);
+    std::printf("load time  %.3f s (parse, buffers, texture decoding, validation, defaults)\n", loadSeconds);
     std::printf("triangles  %zu\n", scene.triangleCount());
     std::printf("vertices   %zu\n", scene.vertexCount());
     std::printf("primitives %zu (%zu instances)\n", scene.primitives.size(), scene.instances.size());
@@ -56,8 +56,9 @@ void printContents(const scene::Scene& scene, double loadSeconds) {
     }
 }
 
-void printLights(const scene::Scene& scene) {
+void printLights(const scene::Scene& scene, const std::string& why) {
     std::printf("lights     %zu\n", scene.lights.size());
+    if (!why.empty()) std::printf("  chosen: %s\n", why.c_str());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& l = scene.lights[i];
         std::printf("  [%zu] %-11s %s colour (%.3g, %.3g, %.3g) intensity %.4g", i,
@@ -76,8 +77,9 @@ void printLights(const scene::Scene& scene) {
     }
 }
 
-void printCameras(const scene::Scene& scene) {
+void printCameras(const scene::Scene& scene, const std::string& why) {
     std::printf("cameras    %zu\n", scene.cameras.size());
+    if (!why.empty()) std::printf("  chosen: %s\n", why.c_str());
     for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
         const scene::Camera& c = scene.cameras[i];
         const glm::vec3 eye(c.worldFromCamera[3]);
@@ -110,15 +112,16 @@ int runInfo(const Config& config) {
     scene::Scene scene;
     std::string error;
     const auto start = std::chrono::steady_clock::now();
-    if (!loadScene(config, scene, error)) {
+    scene::DefaultsReport defaults;
+    if (!loadScene(config, scene, error, &defaults)) {
         std::fprintf(stderr, "voxatlas info: %s\n", error.c_str());
         return 2;
     }
     const double loadSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     printContents(scene, loadSeconds);
-    printLights(scene);
-    printCameras(scene);
+    printLights(scene, defaults.lights);
+    printCameras(scene, defaults.camera);
     printSceneMemory(scene);
     // The GI resources at the given settings (the adaptive plan unless render.plan=fixed or a
     // key it sizes was set), from the scene's first camera.

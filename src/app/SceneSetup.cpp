@@ -1,15 +1,16 @@
 #include "app/SceneSetup.h"
 
+#include "reference/EmbreeRayCaster.h"
 #include "scene/Animation.h"
 #include "scene/GltfLoader.h"
 #include "scene/Recentre.h"
-#include "scene/SceneDefaults.h"
 
 #include <cstdio>
 
 namespace gi::app {
 
-bool loadScene(const Config& config, scene::Scene& scene, std::string& error) {
+bool loadScene(const Config& config, scene::Scene& scene, std::string& error,
+        scene::DefaultsReport* report) {
     std::vector<std::string> warnings;
     if (!scene::loadGltf(config.scenePath, scene, error, warnings)) return false;
     for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
@@ -29,10 +30,14 @@ bool loadScene(const Config& config, scene::Scene& scene, std::string& error) {
         light.position -= scene.origin;
         scene.lights.push_back(light);
     }
-    scene::addDefaults(scene);
+    std::string warning;
+    scene::DefaultsReport defaults = reference::addDefaultsFromGeometry(scene, warning);
+    if (!warning.empty()) std::fprintf(stderr, "warning: %s\n", warning.c_str());
     if (config.noLights) {
         std::erase_if(scene.lights, [](const scene::Light& light) { return light.isDefault; });
+        defaults.lights.clear();
     }
+    if (report) *report = defaults;
     return true;
 }
 

@@ -6,6 +6,7 @@
 #include "app/SceneSetup.h"
 #include "app/SettingHotkeys.h"
 #include "app/Ui.h"
+#include "app/ViewerCameras.h"
 #include "app/ViewerExposure.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Limits.h"
@@ -94,7 +95,8 @@ private:
     void cycleOutput();
     // Applies a change to a copy of the settings; keeps it if the renderer accepts it.
     void changeSetting(const std::function<void(Settings&)>& change, const std::string& key);
-    void nextCamera();
+    // Shows the camera mCameras selects (after C or Home).
+    void showCamera();
     void reloadShaders();
     FlyInput readInput();
     UiFrame uiFrame(double frameMs) const;
@@ -118,8 +120,9 @@ private:
 
     Settings mSettings;
     FlyCamera mCamera;
+    const scene::CameraView mStartView;       // the view the viewer opened with
+    ViewerCameras mCameras;
     ViewerExposure mExposure;
-    int mCameraIndex = 0;                     // scene camera; -1 = the --camera spec
     double mAnimationTime = 0.0;              // seconds of the scene's animations played
     bool mAnimationPaused = false;
     render::GiMode mMode = render::GiMode::Direct;
@@ -137,9 +140,9 @@ private:
 Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
         std::unique_ptr<platform::GlfwWindow> window, const scene::CameraView& camera)
     : mConfig(config), mScene(std::move(scene)), mWindow(std::move(window)),
-      mSettings(config.settings), mCamera(camera, mScene->bounds), mExposure(config.toneMapping),
-      mCameraIndex(config.cameraSpec ? -1 : config.cameraIndex),
-      mAnimationTime(config.animationTime) {
+      mSettings(config.settings), mCamera(camera, mScene->bounds), mStartView(camera),
+      mCameras(*mScene, config.cameraSpec ? -1 : config.cameraIndex),
+      mExposure(config.toneMapping), mAnimationTime(config.animationTime) {
     mHotkeys.push_back({"H", "show / hide this help", [this] { mUi.toggleHelp(); }});
     for (const auto& modeKey : modeKeys()) {
         const render::ModeEntry* entry = modeKey.second;
@@ -162,7 +165,10 @@ Viewer::Viewer(const Config& config, std::unique_ptr<scene::Scene> scene,
         mHotkeys.push_back(
                 {key.key, key.help, [this, &key] { notify((mExposure.*key.action)()); }});
     }
-    mHotkeys.push_back({"C", "next scene camera", [this] { nextCamera(); }});
+    mHotkeys.push_back({"C", "next camera: the file's, then the default one",
+            [this] { mCameras.next(); showCamera(); }});
+    mHotkeys.push_back({"HOME", "back to the start camera",
+            [this] { mCameras.home(); showCamera(); }});
     mHotkeys.push_back({"V", "vsync on / off", [this] {
         mWindow->setVsync(!mWindow->vsync());
         notify(std::string("vsync ") + (mWindow->vsync() ? "on" : "off"));
@@ -237,13 +243,12 @@ float Viewer::coarsestReach() const {
     return 2.0f * glm::length(mScene->bounds.size());
 }
 
-void Viewer::nextCamera() {
-    if (mScene->cameras.empty()) return;
-    const int count = int(mScene->cameras.size());
-    mCameraIndex = (mCameraIndex + 1) % count;
+void Viewer::showCamera() {
     const glm::ivec2 size = glm::max(mWindow->framebufferSize(), glm::ivec2(1));
-    mCamera.reset(scene::cameraFromScene(mScene->cameras[std::size_t(mCameraIndex)],
-            float(size.x) / float(size.y), mScene->bounds));
+    const scene::Camera* camera = mCameras.current();
+    mCamera.reset(camera ? scene::cameraFromScene(*camera, float(size.x) / float(size.y),
+                                   mScene->bounds)
+                         : mStartView);
     notify("camera " + cameraLabel());
 }
 
@@ -262,15 +267,7 @@ void Viewer::reloadShaders() {
 }
 
 std::string Viewer::cameraLabel() const {
-    std::string label;
-    if (mCameraIndex < 0) {
-        label = "--camera";
-    } else {
-        const scene::Camera& camera = mScene->cameras[std::size_t(mCameraIndex)];
-        label = std::to_string(mCameraIndex + 1) + "/" + std::to_string(mScene->cameras.size());
-        if (!camera.name.empty()) label += " " + camera.name;
-    }
-    return mCamera.atStart() ? label : label + " (moved)";
+    return mCamera.atStart() ? mCameras.label() : mCameras.label() + " (moved)";
 }
 
 FlyInput Viewer::readInput() {

@@ -47,7 +47,7 @@ constexpr std::array kNamedKeys = {
     NamedKey{GLFW_KEY_BACKSPACE, "BACKSPACE"}, NamedKey{GLFW_KEY_UP, "UP"},
     NamedKey{GLFW_KEY_DOWN, "DOWN"}, NamedKey{GLFW_KEY_LEFT, "LEFT"},
     NamedKey{GLFW_KEY_RIGHT, "RIGHT"}, NamedKey{GLFW_KEY_MINUS, "-"},
-    NamedKey{GLFW_KEY_EQUAL, "="},
+    NamedKey{GLFW_KEY_EQUAL, "="}, NamedKey{GLFW_KEY_HOME, "HOME"},
 };
 
 } // namespace

@@ -107,7 +107,7 @@ void checkLoadError(const std::string& error, const std::string& name) {
 void checkLoadedScene(Scene& scene, const std::vector<std::string>& warnings) {
     for (const std::string& warning : warnings) require(oneLine(warning), "warnings are one line");
     checkScene(scene);
-    addDefaults(scene);
+    addDefaults(scene, NothingHitCaster());
     require(!scene.lights.empty() && !scene.cameras.empty(), "defaults added");
     checkScene(scene);
 }

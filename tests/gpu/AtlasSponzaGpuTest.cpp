@@ -6,6 +6,7 @@
 // and 3.2 with the sample set's rotation at 1024^2. Skipped where Sponza is not provided.
 #include "GpuTest.h"
 #include "Sponza.h"
+#include "TestScenes.h"
 
 #include "gl/GpuProfiler.h"
 #include "gl/Shared.h"
@@ -14,7 +15,6 @@
 #include "reference/ReferenceRenderer.h"
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <glad/gl.h>
 #include <glm/gtc/constants.hpp>
@@ -41,7 +41,7 @@ TEST_F(AtlasSponzaGpuTest, IndirectEnergyAgainstTheReference) {
     std::string error;
     std::vector<std::string> warnings;
     ASSERT_TRUE(scene::loadGltf(path, scene, error, warnings)) << error;
-    scene::addDefaults(scene); // the documented default light, as the bench renders it
+    addDefaults(scene); // the documented default light, as the bench renders it
     // The bench's Sponza view: inside the arcade, looking down the atrium.
     const scene::CameraView camera = scene::cameraLookAt({0.0f, 2.0f, 14.0f},
             {0.0f, 4.0f, -10.0f}, glm::radians(60.0f), float(kWidth) / float(kHeight),

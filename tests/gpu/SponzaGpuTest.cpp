@@ -3,13 +3,13 @@
 // with finite pixels. Skipped with a one-line explanation where Sponza is not provided.
 #include "GpuTest.h"
 #include "Sponza.h"
+#include "TestScenes.h"
 #include "ImageCompare.h"
 
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -34,7 +34,7 @@ core::Image renderSponza(const std::string& path, render::GiMode mode, int width
     lamp.position = {0.0f, 4.0f, 2.0f};
     lamp.intensity = 40.0f;
     scene.lights.push_back(lamp);
-    scene::addDefaults(scene);
+    addDefaults(scene);
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
     if (!renderer.init(scene, Settings{}, shaders, error) || !renderer.setMode(mode, error)) {

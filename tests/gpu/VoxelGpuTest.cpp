@@ -8,7 +8,6 @@
 #include "gi/voxel/VoxelizationManager.h"
 #include "reference/ImageMetrics.h"
 #include "reference/ReferenceRenderer.h"
-#include "scene/SceneDefaults.h"
 
 #include <glad/gl.h>
 
@@ -241,7 +240,7 @@ TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
     addPrimitive(scene, horizontalSquare(1.0f, kPlaneY));
     // 0.2 m above the square: the finer levels around the camera reach it too.
     scene.cameras.push_back(lookAtCamera({0.0f, 0.2f, 0.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
-    scene::addDefaults(scene);
+    addDefaults(scene);
     VoxelFrame frame(scene, thesisAllocation(), {32, 32});
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
@@ -325,7 +324,7 @@ TEST_F(VoxelGpuTest, SpinlockAveragesUnderHeavyContention) {
         addPrimitive(scene, quad);
     }
     scene.cameras.push_back(lookAtCamera({0.0f, 1.0f, 0.01f}, {0.0f, 0.0f, 0.0f}, 60.0f));
-    scene::addDefaults(scene);
+    addDefaults(scene);
     Settings settings = thesisAllocation();
     settings.voxel.resolution = 4;
     settings.voxel.levels = 1;

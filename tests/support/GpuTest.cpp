@@ -1,10 +1,10 @@
 #include "GpuTest.h"
 
+#include "TestScenes.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
 
 #include <glad/gl.h>
 
@@ -62,7 +62,7 @@ core::Image renderScene(const RenderRequest& request) {
         ADD_FAILURE() << error;
         return {};
     }
-    scene::addDefaults(scene);
+    addDefaults(scene);
     return renderScene(scene, request);
 }
 

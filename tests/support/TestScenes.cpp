@@ -3,7 +3,7 @@
 #include "GpuTest.h"
 
 #include "scene/GltfLoader.h"
-#include "scene/SceneDefaults.h"
+#include "reference/EmbreeRayCaster.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -47,8 +47,14 @@ scene::Scene loadTestScene(const std::string& path) {
     std::vector<std::string> warnings;
     EXPECT_TRUE(scene::loadGltf(!path.empty() && path[0] == '/' ? path : sourcePath(path), scene,
             error, warnings)) << error;
-    scene::addDefaults(scene);
+    addDefaults(scene);
     return scene;
+}
+
+void addDefaults(scene::Scene& scene) {
+    std::string warning;
+    reference::addDefaultsFromGeometry(scene, warning);
+    EXPECT_EQ(warning, "");
 }
 
 scene::Scene loadCornellBox() {

@@ -21,6 +21,10 @@ void addPrimitive(scene::Scene& scene, scene::Primitive primitive);
 // a load error fails the current test.
 [[nodiscard]] scene::Scene loadTestScene(const std::string& path);
 
+// The default light and camera where the scene has none, chosen from its geometry as the
+// program chooses them (reference::addDefaultsFromGeometry).
+void addDefaults(scene::Scene& scene);
+
 // assets/cornell_box/cornell_box.gltf, as loadTestScene loads it.
 [[nodiscard]] scene::Scene loadCornellBox();
 
