@@ -13,7 +13,7 @@ namespace {
 constexpr float kObjectYfov = glm::radians(45.0f);
 constexpr float kInteriorYfov = glm::radians(60.0f);
 constexpr float kEyeHeight = 1.7f;              // metres above the floor
-constexpr float kWallMarginFraction = 0.1f;     // of the free distance behind the centre
+constexpr float kWallMarginFraction = 0.3f;     // of the free distance behind the centre
 constexpr float kMinimumWallMargin = 0.5f;      // metres, unless that is over half the distance
 constexpr float kFramingMargin = 1.05f;         // the bounds' corners stay 5% inside the view
 constexpr float kMinimumSphereDistance = 1.1f;  // x the bounding sphere's radius

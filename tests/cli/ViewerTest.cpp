@@ -129,6 +129,30 @@ TEST_F(ViewerTest, InjectedHotkeysRun) {
     fs::remove_all(dir);
 }
 
+// C moves to the next camera (the Cornell box's own, then the default one chosen from the
+// geometry), which shows another picture; Home comes back to the exact start view.
+TEST_F(ViewerTest, CameraKeysCycleAndHomeReturnsToTheStart) {
+    const std::string dir = makeTempDir("view-cameras");
+    const std::vector<std::string> size = {"--width", "64", "--height", "64", "--exposure", "0"};
+    auto run = [&](const std::string& keys, const std::string& png) {
+        std::vector<std::string> args = {kCornell, "--frames", "3", "--screenshot", png};
+        args.insert(args.end(), size.begin(), size.end());
+        if (!keys.empty()) args.insert(args.end(), {"--keys", keys});
+        const ProcessResult r = runView(dir, args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        core::Image image;
+        std::string error;
+        EXPECT_TRUE(core::readPng(dir + "/" + png, image, error)) << error;
+        return image;
+    };
+    const core::Image start = run("", "start.png");
+    const core::Image next = run("1:C", "next.png");
+    const core::Image home = run("0:C,1:HOME", "home.png");
+    EXPECT_GT(compareImages(next, start, 3).failingFraction, 0.1) << "C changed the view";
+    EXPECT_EQ(compareImages(home, start, 3).maxAbsDiff, 0) << "Home is the start view";
+    fs::remove_all(dir);
+}
+
 // Key 2 switches to voxel GI, key 3 to atlas GI (a small atlas, uncached, to stay quick and
 // out of the user's cache); the indirect light brightens the frame.
 TEST_F(ViewerTest, ModeKeysSwitchOrExplain) {

@@ -2,8 +2,8 @@
 
 #include "GpuTest.h"
 
-#include "scene/GltfLoader.h"
 #include "reference/EmbreeRayCaster.h"
+#include "scene/GltfLoader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
