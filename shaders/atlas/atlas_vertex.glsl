@@ -11,10 +11,12 @@
     VERTEX_DATA_MEMBERS      \
     float doubleSided;
 
-// The draws from the camera (block ResolveVertex): the atlas coordinate and the chart index.
+// The draws from the camera (block ResolveVertex): the atlas coordinate, the chart index and
+// 1 for double-sided materials.
 #define RESOLVE_VERTEX_MEMBERS \
     VERTEX_DATA_MEMBERS        \
     vec2 atlasUv;              \
-    flat float chart;
+    flat float chart;          \
+    flat float doubleSided;
 
 #endif

@@ -22,16 +22,19 @@
 //                             directions (kept for comparison; it does not converge to the
 //                             integral above).
 // The final pass multiplies E_ind by rho/pi. Texels with a(y) > 0 are senders.
-// Double-sided senders send to both sides; a double-sided receiver keeps the mean of both
-// sides' irradiance (the atlas has one value per surface point). With VISIBILITY_VOXEL each
-// pair is weighted by the voxel occupancy's transmittance (voxel_visibility.glsl).
-// Output: the sum (before the 1/N normalisation) added to the running sums by blending.
+// A double-sided texel is two surfaces back to back (AtlasTextures.h): a sender sends each
+// side's own radiance to that side, and p(y) counts both sides' power; a receiver adds what
+// arrives against its normal to the back side's sum. With VISIBILITY_VOXEL each pair is
+// weighted by the voxel occupancy's transmittance (voxel_visibility.glsl).
+// Output: the sums of both sides (before the 1/N normalisation) added to the running sums by
+// blending.
 #include "atlas_common.glsl"
 #ifdef VISIBILITY_VOXEL
 #include "voxel_visibility.glsl"
 #endif
 
 layout(binding = BIND_TEX_ATLAS_DIRECT) uniform sampler2D atlasDirect;
+layout(binding = BIND_TEX_ATLAS_DIRECT_BACK) uniform sampler2D atlasDirectBack;
 layout(binding = BIND_TEX_ATLAS_NORMAL) uniform sampler2D atlasNormal;
 layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
 layout(binding = BIND_TEX_ATLAS_SAMPLES) uniform sampler2D atlasSamples;
@@ -54,6 +57,7 @@ uint hash(uint v) {
 }
 
 layout(location = 0) out vec4 outSum;
+layout(location = 1) out vec4 outSumBack;
 
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -68,7 +72,7 @@ void main() {
     // The receiver's pick among each stratum's points changes with the set (sampling.y differs
     // between rotated sets), so its own estimate converges as sets accumulate.
     uint receiver = hash(uint(texel.y * resolution + texel.x) ^ floatBitsToUint(atlas.sampling.y));
-    vec3 sum = vec3(0.0);
+    vec3 sum = vec3(0.0), sumBack = vec3(0.0);
     for (int i = 0; i < count; ++i) {
         ivec2 t;
         if (area) {
@@ -87,29 +91,36 @@ void main() {
         if (r2 <= 0.0) continue;
         vec3 w = d * inversesqrt(r2);
         vec4 senderNormal = texelFetch(atlasNormal, t, 0);
+        bool senderTwoSided = senderNormal.w > 0.5;
         float cosX = dot(nx, w);
         float cosY = -dot(senderNormal.xyz, w);
-        if (receiverTwoSided) cosX = 0.5 * abs(cosX);
-        if (senderNormal.w > 0.5) cosY = abs(cosY);
+        bool receiverBack = receiverTwoSided && cosX < 0.0;
+        bool senderBack = senderTwoSided && cosY < 0.0;
+        if (receiverBack) cosX = -cosX;
+        if (senderBack) cosY = -cosY;
         if (cosX <= 0.0 || cosY <= 0.0) continue;
-        vec3 radiance = texelFetch(atlasDirect, t, 0).rgb;
+        vec3 front = texelFetch(atlasDirect, t, 0).rgb;
+        vec3 back = senderTwoSided ? texelFetch(atlasDirectBack, t, 0).rgb : vec3(0.0);
+        vec3 radiance = senderBack ? back : front;
         vec3 contribution;
         if (area) {
-            // Drawn with probability a(y) mean(L(y)) / P: the weight is L / mean(L) times the
-            // geometry term, and P multiplies the sum below.
-            float power = dot(radiance, vec3(1.0 / 3.0));
+            // Drawn with probability a(y) mean(L(y)) / P (L of both sides): the weight is
+            // L / mean(L) times the geometry term, and P multiplies the sums below.
+            float power = dot(front + back, vec3(1.0 / 3.0));
             if (!(power > 0.0) || isinf(power)) continue;
             contribution = radiance / power * (cosX * cosY / max(r2, atlas.sampling.z));
         } else {
             contribution = radiance * cosX;
         }
 #ifdef VISIBILITY_VOXEL
-        vec3 receiverSide = receiverTwoSided && dot(nx, w) < 0.0 ? -nx : nx;
-        vec3 senderSide = dot(senderNormal.xyz, w) > 0.0 ? -senderNormal.xyz : senderNormal.xyz;
+        vec3 receiverSide = receiverBack ? -nx : nx;
+        vec3 senderSide = senderBack ? -senderNormal.xyz : senderNormal.xyz;
         contribution *= voxelTransmittance(x, receiverSide, y.xyz, senderSide);
 #endif
-        sum += contribution;
+        if (receiverBack) sumBack += contribution;
+        else sum += contribution;
     }
     float scale = area ? rowPower[resolution - 1] : atlas.sampling.z;
     outSum = vec4(sum * scale, 1.0);
+    outSumBack = vec4(sumBack * scale, 1.0);
 }

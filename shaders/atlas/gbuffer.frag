@@ -1,12 +1,15 @@
 // Atlas G-buffer, fragment stage (thesis 4.4, eq. 5 and 6): one fragment per atlas texel of a
-// surface, writing four layers (shared.h, BIND_TEX_ATLAS_*):
-//   direct   the surface's outgoing direct radiance L = rho/pi * E + L_emitted, E summed over
-//            every light with the forward pass's conventions and shadow maps (Lambert only;
-//            the specular term is not part of what a diffuse surface sends on),
-//   normal   unit normal, w = 1 for double-sided materials,
-//   position world position; w = 0 (the SAMPLE_AREA draw adds the area, below),
-//   albedo   rho.
-// Double-sided surfaces hold one value per point: each light lights the side it faces.
+// surface, writing five layers (shared.h, BIND_TEX_ATLAS_*):
+//   direct      the surface's outgoing direct radiance L = rho/pi * E + L_emitted on the side
+//               the normal points to, E summed over every light with the forward pass's
+//               conventions and shadow maps (Lambert only; the specular term is not part of
+//               what a diffuse surface sends on),
+//   direct back the same on the other side for double-sided materials (0 for single-sided),
+//   normal      unit normal, w = 1 for double-sided materials,
+//   position    world position; w = 0 (the SAMPLE_AREA draw adds the area, below),
+//   albedo      rho.
+// The two sides of a double-sided surface are lit separately, each only by the lights in
+// front of it, and both emit, as the path tracer shades them (its normal faces the ray).
 // SAMPLE_AREA (a third draw, conservative, additive blending into position.w only): each
 // triangle adds the world area of its part inside the texel square (the triangle clipped to
 // the square, times the triangle's world area per texel^2), so w is the surface area the texel
@@ -87,6 +90,7 @@ layout(location = 0) out vec4 outDirect;
 layout(location = 1) out vec4 outNormal;
 layout(location = 2) out vec4 outPosition;
 layout(location = 3) out vec4 outAlbedo;
+layout(location = 4) out vec4 outDirectBack;
 
 #ifdef SAMPLE_AREA
 
@@ -102,6 +106,21 @@ void main() {
 
 #else
 
+// Direct irradiance on the side facing n.
+vec3 irradiance(vec3 n) {
+    vec3 e = vec3(0.0);
+    for (int i = 0; i < frame.counts.x; ++i) {
+        vec3 li = lightIrradiance(lights[i], vin.position, n);
+        if (all(equal(li, vec3(0.0)))) continue;
+        vec3 toLight;
+        float distance;
+        lightDirection(lights[i], vin.position, toLight, distance);
+        if (frame.shading.w != 0.0) li *= shadowVisibility(i, vin.position, n, distance);
+        e += li;
+    }
+    return e;
+}
+
 void main() {
 #ifdef CONSERVATIVE
     vec2 texelMin = gl_FragCoord.xy - 0.5, texelMax = gl_FragCoord.xy + 0.5;
@@ -116,19 +135,10 @@ void main() {
     float nLength = length(vin.normal);
     vec3 n = nLength > 0.0 ? vin.normal / nLength : vec3(0.0, 1.0, 0.0);
     bool doubleSided = vin.doubleSided > 0.5;
-    vec3 e = vec3(0.0);
-    for (int i = 0; i < frame.counts.x; ++i) {
-        vec3 toLight;
-        float distance;
-        lightDirection(lights[i], vin.position, toLight, distance);
-        vec3 lit = doubleSided && dot(n, toLight) < 0.0 ? -n : n;
-        vec3 li = lightIrradiance(lights[i], vin.position, lit);
-        if (all(equal(li, vec3(0.0)))) continue;
-        if (frame.shading.w != 0.0) li *= shadowVisibility(i, vin.position, lit, distance);
-        e += li;
-    }
-    vec3 radiance = baseColor.rgb / PI * e + materialEmission(m, vin.texcoord0);
-    outDirect = vec4(radiance, 1.0);
+    vec3 emission = materialEmission(m, vin.texcoord0);
+    outDirect = vec4(baseColor.rgb / PI * irradiance(n) + emission, 1.0);
+    outDirectBack = doubleSided ? vec4(baseColor.rgb / PI * irradiance(-n) + emission, 1.0)
+                                : vec4(0.0);
     outNormal = vec4(n, doubleSided ? 1.0 : 0.0);
     outPosition = vec4(vin.position, 0.0);
     outAlbedo = vec4(baseColor.rgb, 1.0);

@@ -13,5 +13,6 @@ void main() {
     WRITE_VERTEX_DATA(vout)
     vout.atlasUv = inAtlasUv;
     vout.chart = inAtlasInfo.x;
+    vout.doubleSided = inAtlasInfo.y;
     gl_Position = frame.viewProjection * vec4(inPosition, 1.0);
 }

@@ -1,7 +1,7 @@
 // Senders for the area estimator, drawn in proportion to the power they send
 // (AtlasSenderSamplingPass.h). A texel's weight is a(y) mean(L(y)): its sample area
 // (position.w, m^2) times the mean of its direct radiance over RGB, where the G-buffer wrote it
-// (direct.a > 0).
+// (direct.a > 0); double-sided texels add their back side's mean radiance (both sides send).
 //   STEP_ROWS    one invocation per atlas row: prefix sums of the weights at the end of every
 //                ATLAS_SENDER_BLOCK texels, and the row's sum.
 //   STEP_PREFIX  one invocation: the row sums turned into prefix sums over rows.
@@ -17,6 +17,8 @@ layout(local_size_x = ATLAS_SENDER_LOCAL_SIZE) in;
 
 layout(binding = BIND_TEX_ATLAS_DIRECT) uniform sampler2D atlasDirect;
 layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
+layout(binding = BIND_TEX_ATLAS_NORMAL) uniform sampler2D atlasNormal;
+layout(binding = BIND_TEX_ATLAS_DIRECT_BACK) uniform sampler2D atlasDirectBack;
 
 layout(std430, binding = BIND_SSBO_ATLAS_SENDER_ROWS) buffer SenderRows {
     float rowPower[];
@@ -34,7 +36,9 @@ float senderPower(int x, int y) {
     ivec2 t = ivec2(x, y);
     vec4 direct = texelFetch(atlasDirect, t, 0);
     if (direct.a <= 0.0) return 0.0;
-    float power = max(texelFetch(atlasPosition, t, 0).w, 0.0) * dot(direct.rgb, vec3(1.0 / 3.0));
+    vec3 radiance = direct.rgb;
+    if (texelFetch(atlasNormal, t, 0).w > 0.5) radiance += texelFetch(atlasDirectBack, t, 0).rgb;
+    float power = max(texelFetch(atlasPosition, t, 0).w, 0.0) * dot(radiance, vec3(1.0 / 3.0));
     return isinf(power) || isnan(power) ? 0.0 : power;
 }
 

@@ -65,6 +65,11 @@
                                         // a = 1 where a receiver was written
 #define BIND_TEX_ATLAS_LIT          14  // rgba16f, rgb = E_ind (W/m^2), dilated into the gutters;
                                         // a = 1 surface, 0.5 dilated, 0 empty
+// The back side (against the normal) of double-sided texels: the same as the three above.
+// Single-sided texels leave them 0; scenes without double-sided materials have 1 x 1 ones.
+#define BIND_TEX_ATLAS_DIRECT_BACK  15
+#define BIND_TEX_ATLAS_SUMS_BACK    16
+#define BIND_TEX_ATLAS_LIT_BACK     17
 
 // Image units (imageLoad/Store/atomics) of the voxel passes.
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
@@ -247,7 +252,8 @@ struct AtlasUniforms {                  // std140
                                         // z = estimator constant (area: the smallest r^2 its
                                         // 1/r^2 uses, (2 texel edges)^2 in m^2; merz2010:
                                         // 2 pi), w = 1 / samples accumulated
-    vec4 dilation;                      // x = dilation radius (texels), yzw = unused
+    vec4 dilation;                      // x = dilation radius (texels), y = 1 if the back-side
+                                        // layers exist (double-sided materials), zw = unused
 };
 
 #ifdef __cplusplus

@@ -48,8 +48,10 @@ void main() {
 
     vec3 n = normalize(vin.normal);
     vec3 toEye = normalize(frame.cameraPosition.xyz - vin.position);
-    // Seen from behind (double-sided or culling off), a surface is lit on the viewer's side.
-    if (!gl_FrontFacing) n = -n;
+    // A surface is lit on the side the viewer sees (double-sided, or seen from behind with
+    // culling off), the side its own normal faces from the eye, as in the path tracer: the
+    // winding (gl_FrontFacing) picks the wrong side where normals point against it.
+    if (dot(n, toEye) < 0.0) n = -n;
 
     vec3 radiance = materialEmission(m, vin.texcoord0);
     float ks = frame.shading.x, shininess = frame.shading.y;

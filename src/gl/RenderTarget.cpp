@@ -22,8 +22,8 @@ bool attachFramebuffer(Framebuffer& framebuffer, const char* label,
     std::vector<GLenum> drawBuffers;
     for (const Texture* color : colors) {
         const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(drawBuffers.size());
-        glNamedFramebufferTexture(framebuffer.id(), attachment, color->id(), 0);
-        drawBuffers.push_back(attachment);
+        if (color) glNamedFramebufferTexture(framebuffer.id(), attachment, color->id(), 0);
+        drawBuffers.push_back(color ? attachment : GL_NONE);
     }
     if (depth) glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
     if (drawBuffers.empty()) {

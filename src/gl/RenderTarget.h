@@ -25,8 +25,9 @@ struct TargetTexture {
 // A one-level 2D texture of `size` as `texture` describes (also for compute-written images).
 [[nodiscard]] Texture createTargetTexture(const TargetTexture& texture, glm::ivec2 size);
 
-// Makes `framebuffer` (labelled `label`) draw into `colors` (attachment i = colors[i]) and
-// `depth` (nullptr: none). False with a message naming it if the result is incomplete.
+// Makes `framebuffer` (labelled `label`) draw into `colors` (attachment i = colors[i]; a
+// nullptr entry leaves draw buffer i unattached, its output dropped) and `depth` (nullptr:
+// none). False with a message naming it if the result is incomplete.
 [[nodiscard]] bool attachFramebuffer(Framebuffer& framebuffer, const char* label,
         std::initializer_list<const Texture*> colors, const Texture* depth, std::string& error);
 

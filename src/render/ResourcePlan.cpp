@@ -201,7 +201,8 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
                                                             gl::textureBytes(GL_RGBA8_SNORM, size, 1) +
                                                             gl::textureBytes(GL_R32UI, size, 1)});
     }
-    plan.atlasMemory = atlas::AtlasTextures::memoryFor(plan.atlasResolution);
+    plan.atlasMemory = atlas::AtlasTextures::memoryFor(
+            plan.atlasResolution, atlas::AtlasTextures::needsBackSides(scene));
     plan.shadowMemory = ShadowPass::memoryFor(plannedLights(lights, plan), settings.shadow);
     return plan;
 }

@@ -10,23 +10,6 @@
 namespace gi::test {
 namespace {
 
-
-// The atlas texel of world point p on triangle t (barycentric in world space).
-glm::ivec2 texelOf(
-        const atlas::AtlasMesh& mesh, const atlas::Atlas& atlas, std::size_t t, glm::dvec3 p) {
-    const auto corner = [&](int k) {
-        return glm::dvec3(
-                mesh.positions[atlas.vertices[atlas.indices[3 * t + std::size_t(k)]].source]);
-    };
-    const glm::dvec3 a = corner(0), e1 = corner(1) - a, e2 = corner(2) - a, r = p - a;
-    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-    const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2), det = d11 * d22 - d12 * d12;
-    const double w1 = (d22 * r1 - d12 * r2) / det, w2 = (d11 * r2 - d12 * r1) / det;
-    const glm::dvec2 uv = (1.0 - w1 - w2) * texelPosition(atlas, t, 0) +
-            w1 * texelPosition(atlas, t, 1) + w2 * texelPosition(atlas, t, 2);
-    return glm::ivec2(glm::floor(uv));
-}
-
 // An emitting square (radiance L, black) 0.5 m above the centre of an equal floor square:
 // E = L * integral cos cos / r^2 dA = 4 L (1/sqrt 2) atan(1/sqrt 2) = 1.7408 L (the
 // point-to-rectangle form factor, e.g. Howell's catalogue, C-11, times pi). No lights.
@@ -52,22 +35,6 @@ scene::Scene emitterOverFloor(bool occluder) {
     }
     scene.cameras.push_back(lookAtCamera({0.0f, 0.25f, 0.4f}, {0.0f, 0.25f, 0.0f}, 50.0f));
     return scene;
-}
-
-constexpr double kEmitterFormFactor = 1.7408437; // 4 / sqrt(2) * atan(1 / sqrt(2))
-
-// Mean E_ind over the 3x3 texels around the floor's centre (E is flat there: 0.2% over 1 cm).
-glm::dvec3 floorCentreIrradiance(const atlas::Atlas& atlas, const atlas::AtlasMesh& mesh,
-        const std::vector<glm::vec4>& lit) {
-    const int r = atlas.resolution;
-    const glm::ivec2 centre = texelOf(mesh, atlas, 0, glm::dvec3(0.0));
-    glm::dvec3 sum(0.0);
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            sum += glm::dvec3(
-                    lit[std::size_t(centre.y + dy) * std::size_t(r) + std::size_t(centre.x + dx)]);
-        }
-    return sum / 9.0;
 }
 
 TEST_F(AtlasGpuTest, AreaEstimatorMatchesAnalyticEmitter) {

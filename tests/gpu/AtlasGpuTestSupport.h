@@ -73,6 +73,41 @@ inline glm::dvec2 texelPosition(const atlas::Atlas& atlas, std::size_t triangle,
             double(atlas.resolution);
 }
 
+// The atlas texel of world point p on triangle t (barycentric in world space).
+inline glm::ivec2 texelOf(
+        const atlas::AtlasMesh& mesh, const atlas::Atlas& atlas, std::size_t t, glm::dvec3 p) {
+    const auto corner = [&](int k) {
+        return glm::dvec3(
+                mesh.positions[atlas.vertices[atlas.indices[3 * t + std::size_t(k)]].source]);
+    };
+    const glm::dvec3 a = corner(0), e1 = corner(1) - a, e2 = corner(2) - a, r = p - a;
+    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2), det = d11 * d22 - d12 * d12;
+    const double w1 = (d22 * r1 - d12 * r2) / det, w2 = (d11 * r2 - d12 * r1) / det;
+    const glm::dvec2 uv = (1.0 - w1 - w2) * texelPosition(atlas, t, 0) +
+            w1 * texelPosition(atlas, t, 1) + w2 * texelPosition(atlas, t, 2);
+    return glm::ivec2(glm::floor(uv));
+}
+
+// E at the centre of a square's floor twin 0.5 m under it, per unit radiance of the square:
+// 4 / sqrt(2) * atan(1 / sqrt(2)) (the point-to-rectangle form factor times pi).
+constexpr double kEmitterFormFactor = 1.7408437;
+
+// Mean E_ind over the 3x3 texels around the centre of a floor whose first triangle holds the
+// origin (E is flat there: 0.2% over 1 cm).
+inline glm::dvec3 floorCentreIrradiance(const atlas::Atlas& atlas, const atlas::AtlasMesh& mesh,
+        const std::vector<glm::vec4>& lit) {
+    const int r = atlas.resolution;
+    const glm::ivec2 centre = texelOf(mesh, atlas, 0, glm::dvec3(0.0));
+    glm::dvec3 sum(0.0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            sum += glm::dvec3(
+                    lit[std::size_t(centre.y + dy) * std::size_t(r) + std::size_t(centre.x + dx)]);
+        }
+    return sum / 9.0;
+}
+
 // One fixture type for the suite, whichever file its tests are in.
 class AtlasGpuTest : public GpuTest {};
 

@@ -31,6 +31,8 @@ void AtlasDebugViewPass::execute(const Inputs& in, const Outputs& out,
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     glBindTextureUnit(BIND_TEX_ATLAS_ALBEDO, in.textures.albedo.id());
     glBindTextureUnit(BIND_TEX_ATLAS_LIT, in.textures.lit.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, in.textures.directBack.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_LIT_BACK, in.textures.litBack.id());
     in.scene.drawAll(mProgram.id(), true, &in.geometry.vertexArray());
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);

@@ -17,7 +17,7 @@ bool AtlasDilatePass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 bool AtlasDilatePass::attach(const AtlasTextures& textures, std::string& error) {
     mResolution = textures.resolution;
-    return gl::attachFramebuffer(mFramebuffer, "atlas/dilate", {&textures.lit}, nullptr, error);
+    return gl::attachFramebuffer(mFramebuffer, "atlas/dilate", {&textures.lit, textures.attachable(textures.litBack)}, nullptr, error);
 }
 
 void AtlasDilatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
@@ -31,6 +31,7 @@ void AtlasDilatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
     glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sums.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_SUMS_BACK, in.textures.sumsBack.id());
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -33,8 +33,9 @@ bool AtlasGBufferPass::attach(const AtlasTextures& textures, std::string& error)
     mDepth = gl::createTexture2D(
             GL_DEPTH_COMPONENT32F, {mResolution, mResolution}, 1, "atlas/gbuffer_depth");
     return gl::attachFramebuffer(mFramebuffer, "atlas/gbuffer",
-            {&textures.direct, &textures.normal, &textures.position, &textures.albedo}, &mDepth,
-            error);
+            {&textures.direct, &textures.normal, &textures.position, &textures.albedo,
+                    textures.attachable(textures.directBack)},
+            &mDepth, error);
 }
 
 void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
@@ -51,7 +52,7 @@ void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProf
     glDepthMask(GL_TRUE);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float clearDepth = 1.0f;
-    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
+    for (int i = 0; i < 5; ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &clearDepth);
 
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());

@@ -23,12 +23,13 @@ bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 bool AtlasGatherPass::attach(const AtlasTextures& textures, std::string& error) {
     mResolution = textures.resolution;
-    return gl::attachFramebuffer(mFramebuffer, "atlas/gather", {&textures.sums}, nullptr, error);
+    return gl::attachFramebuffer(mFramebuffer, "atlas/gather", {&textures.sums, textures.attachable(textures.sumsBack)}, nullptr, error);
 }
 
 void AtlasGatherPass::clear() {
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 1, zero);
 }
 
 void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
@@ -46,6 +47,7 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glUseProgram(program);
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
     glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.direct.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, in.textures.directBack.id());
     glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, in.textures.normal.id());
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     glBindTextureUnit(BIND_TEX_ATLAS_SAMPLES, in.samples.id());

@@ -42,6 +42,7 @@ int atlasView(DebugView view) {
 
 bool AtlasGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) {
     mMesh = flattenScene(scene);
+    mBackSides = AtlasTextures::needsBackSides(scene);
     mFollowsPose = std::any_of(scene.instances.begin(), scene.instances.end(),
             [](const scene::Instance& instance) { return instance.dynamic; });
     mUniforms = gl::createBuffer(
@@ -79,7 +80,7 @@ bool AtlasGi::buildAtlasGeometry(std::string& error) {
                     : (" (not cached: " + mBuildInfo.cacheError + ")").c_str());
     mGeometry.upload(mMesh, mAtlas, mFollowsPose);
     mPosedGeometry = ~std::uint64_t(0);
-    mTextures.allocate(mSettings.resolution);
+    mTextures.allocate(mSettings.resolution, mBackSides);
     return mGBuffer.attach(mTextures, error) && mGather.attach(mTextures, error) &&
             mDilate.attach(mTextures, error);
 }
@@ -96,7 +97,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         return false;
     }
     if (!gl::fitsResourceBudget("atlas.resolution " + std::to_string(s.resolution) +
-                    " (atlas layers)", AtlasTextures::memoryFor(s.resolution), error)) {
+                    " (atlas layers)", AtlasTextures::memoryFor(s.resolution, mBackSides), error)) {
         return false;
     }
     if (s.samples > maxTexture) {
@@ -140,7 +141,8 @@ void AtlasGi::writeUniforms(const FramePlan& plan) {
     // The dilation normalises the sums as they are after this frame's gather.
     const float normalisation = mContent.samples > 0 ? 1.0f / float(mContent.samples) : 0.0f;
     u.sampling = glm::vec4(plan.rotation, estimatorConstant, normalisation);
-    u.dilation = glm::vec4(float((mSettings.gutter + 1) / 2), 0.0f, 0.0f, 0.0f);
+    u.dilation = glm::vec4(
+            float((mSettings.gutter + 1) / 2), mTextures.backSides ? 1.0f : 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 

@@ -80,6 +80,7 @@ private:
     void writeUniforms(const FramePlan& plan);
 
     AtlasMesh mMesh;
+    bool mBackSides = false; // some material is double-sided (AtlasTextures)
     Atlas mAtlas;
     AtlasBuildInfo mBuildInfo;
     AtlasSettings mSettings;

@@ -27,6 +27,7 @@ void AtlasResolvePass::execute(const Inputs& in, const Outputs& out, gl::GpuProf
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     glBindTextureUnit(BIND_TEX_ATLAS_LIT, in.textures.lit.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_LIT_BACK, in.textures.litBack.id());
     in.scene.drawAll(mProgram.id(), true, &in.geometry.vertexArray());
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);

@@ -1,5 +1,7 @@
 #include "gi/atlas/AtlasTextures.h"
 
+#include <algorithm>
+
 namespace gi::atlas {
 namespace {
 
@@ -18,24 +20,38 @@ gl::Texture layer(GLenum format, int resolution, GLenum filter, const char* labe
 
 } // namespace
 
-void AtlasTextures::allocate(int size) {
+void AtlasTextures::allocate(int size, bool withBackSides) {
     resolution = size;
+    backSides = withBackSides;
     direct = layer(kDirectFormat, size, GL_NEAREST, "atlas/direct");
     normal = layer(kNormalFormat, size, GL_NEAREST, "atlas/normal");
     position = layer(kPositionFormat, size, GL_NEAREST, "atlas/position");
     albedo = layer(kAlbedoFormat, size, GL_NEAREST, "atlas/albedo");
     sums = layer(kSumsFormat, size, GL_NEAREST, "atlas/sums");
     lit = layer(kLitFormat, size, GL_LINEAR, "atlas/lit");
+    const int back = withBackSides ? size : 1;
+    directBack = layer(kDirectFormat, back, GL_NEAREST, "atlas/back/direct");
+    sumsBack = layer(kSumsFormat, back, GL_NEAREST, "atlas/back/sums");
+    litBack = layer(kLitFormat, back, GL_LINEAR, "atlas/back/lit");
 }
 
-std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution) {
+std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution, bool backSides) {
     const glm::ivec3 size(resolution, resolution, 1);
+    const glm::ivec3 back = backSides ? size : glm::ivec3(1);
     return {{"atlas/direct", gl::textureBytes(kDirectFormat, size, 1)},
             {"atlas/normal", gl::textureBytes(kNormalFormat, size, 1)},
             {"atlas/position", gl::textureBytes(kPositionFormat, size, 1)},
             {"atlas/albedo", gl::textureBytes(kAlbedoFormat, size, 1)},
             {"atlas/sums", gl::textureBytes(kSumsFormat, size, 1)},
-            {"atlas/lit", gl::textureBytes(kLitFormat, size, 1)}};
+            {"atlas/lit", gl::textureBytes(kLitFormat, size, 1)},
+            {"atlas/back/direct", gl::textureBytes(kDirectFormat, back, 1)},
+            {"atlas/back/sums", gl::textureBytes(kSumsFormat, back, 1)},
+            {"atlas/back/lit", gl::textureBytes(kLitFormat, back, 1)}};
+}
+
+bool AtlasTextures::needsBackSides(const scene::Scene& scene) {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+            [](const scene::Material& material) { return material.doubleSided; });
 }
 
 } // namespace gi::atlas
