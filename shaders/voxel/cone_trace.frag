@@ -309,7 +309,10 @@ void main() {
         return;
     }
     vec3 n = normalize(vin.normal);
-    if (!gl_FrontFacing) n = -n;
+    // The side the viewer sees gathers, the side its own normal faces from the eye, as in the
+    // path tracer and the forward pass (the winding picks the wrong side where normals point
+    // against it).
+    if (dot(n, frame.cameraPosition.xyz - vin.position) < 0.0) n = -n;
     // Leave the surface's own voxel before the first sample.
     vec3 origin = vin.position + n * levelVoxelSize(level);
     float maxDistance = voxel.trace.y;
