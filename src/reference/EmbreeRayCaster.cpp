@@ -6,17 +6,7 @@ std::optional<scene::RayHit> EmbreeRayCaster::cast(const glm::vec3& origin,
         const glm::vec3& direction, float minDistance, float maxDistance) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rayHit{};
-    rayHit.ray.org_x = origin.x;
-    rayHit.ray.org_y = origin.y;
-    rayHit.ray.org_z = origin.z;
-    rayHit.ray.dir_x = direction.x;
-    rayHit.ray.dir_y = direction.y;
-    rayHit.ray.dir_z = direction.z;
-    rayHit.ray.tnear = minDistance;
-    rayHit.ray.tfar = maxDistance;
-    rayHit.ray.mask = 0xFFFFFFFFu;
-    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rayHit = makeRayHit(origin, direction, minDistance, maxDistance);
     rtcIntersect1(mState.rtcScene, &context, &rayHit);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     const std::uint32_t triangle = mState.firstTriangle[rayHit.hit.geomID] + rayHit.hit.primID;

@@ -204,4 +204,24 @@ std::unique_ptr<EmbreeState> buildEmbreeState(const scene::Scene& scene, std::st
     return state;
 }
 
+RTCRayHit makeRayHit(const glm::vec3& origin, const glm::vec3& direction, float tnear,
+        float tfar) {
+    RTCRayHit rayHit{};
+    rayHit.ray.org_x = origin.x;
+    rayHit.ray.org_y = origin.y;
+    rayHit.ray.org_z = origin.z;
+    rayHit.ray.dir_x = direction.x;
+    rayHit.ray.dir_y = direction.y;
+    rayHit.ray.dir_z = direction.z;
+    rayHit.ray.tnear = tnear;
+    rayHit.ray.tfar = tfar;
+    rayHit.ray.mask = 0xFFFFFFFFu;
+    rayHit.ray.time = 0.0f;
+    rayHit.ray.flags = 0;
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rayHit;
+}
+
 } // namespace gi::reference

@@ -105,4 +105,8 @@ struct EmbreeState {
 // Builds the state for `scene`; null, with `error` set, when Embree fails.
 std::unique_ptr<EmbreeState> buildEmbreeState(const scene::Scene& scene, std::string& error);
 
+// A ray from `origin` along `direction` over [tnear, tfar], its hit not yet found.
+[[nodiscard]] RTCRayHit makeRayHit(const glm::vec3& origin, const glm::vec3& direction,
+        float tnear, float tfar);
+
 } // namespace gi::reference

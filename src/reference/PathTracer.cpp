@@ -81,22 +81,7 @@ PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
 }
 
 RTCRayHit PathTracer::ray(const glm::vec3& origin, const glm::vec3& direction, float tfar) {
-    RTCRayHit rayHit{};
-    rayHit.ray.org_x = origin.x;
-    rayHit.ray.org_y = origin.y;
-    rayHit.ray.org_z = origin.z;
-    rayHit.ray.dir_x = direction.x;
-    rayHit.ray.dir_y = direction.y;
-    rayHit.ray.dir_z = direction.z;
-    rayHit.ray.tnear = 0.0f;
-    rayHit.ray.tfar = tfar;
-    rayHit.ray.mask = 0xFFFFFFFFu;
-    rayHit.ray.time = 0.0f;
-    rayHit.ray.flags = 0;
-    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    return rayHit;
+    return makeRayHit(origin, direction, 0.0f, tfar);
 }
 
 // The ray through a point of the image, from the near plane to the far plane, exactly as
