@@ -265,6 +265,7 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
            "v=64, full-resolution trace, injection at 4v; **atlas** the defaults, one frame; **atlas converged** "
            "`atlas.visibility=voxel`, accumulated to `atlas.target_samples`.\n\n";
     for (const std::string& note : info.notes) out << "Note: " << note << "\n\n";
+    out << "Why each missed target is missed, and what was tried: `accuracy-analysis.md`.\n\n";
 
     targetsSection(out, scores);
     // The dark room has no indirect light to be relative to: its score is the leak.
