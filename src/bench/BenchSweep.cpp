@@ -147,7 +147,7 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     list.push_back(voxel("max distance " + shortDistance + " m",
             {{"voxel.max_distance", shortDistance}}));
     list.push_back(voxel("scene-centred", {{"voxel.scene_centred", "1"}}));
-    list.push_back(voxel("coverage max-axis", {{"voxel.coverage_max_axis", "1"}}));
+    list.push_back(voxel("coverage mean (thesis)", {{"voxel.coverage_max_axis", "0"}}));
     list.push_back(voxel("inject 4v", {{"voxel.inject_resolution", "128"}}));
     list.push_back(voxel("fragment-mean inject", {{"voxel.inject_fragment_mean", "1"}}));
     list.push_back(voxelFast);

@@ -4,7 +4,7 @@
 // base configuration (each row changes one setting) plus a few combined presets:
 //   voxel: voxel.resolution, voxel.cascades, voxel.trace_scale, voxel.multiplier,
 //          voxel.max_distance, and the options beyond the thesis (scene-centred cascade,
-//          max-axis coverage, injection at 4v, the thesis' fragment-mean injection);
+//          the thesis' mean coverage, injection at 4v, the thesis' fragment-mean injection);
 //   atlas: atlas.resolution, atlas.samples, atlas.estimator, atlas.visibility, and
 //          progressive accumulation over several frames (a separate plot series, since its
 //          image needs N frames of a static scene).
