@@ -3,8 +3,9 @@
 // parameter (thousands of frames on llvmpipe) but a one-at-a-time sweep around the mode's
 // base configuration (each row changes one setting) plus a few combined presets:
 //   voxel: voxel.resolution, voxel.cascades, voxel.trace_scale, voxel.multiplier,
-//          voxel.max_distance, and the options beyond the thesis (scene-centred cascade,
-//          the thesis' mean coverage, injection at 4v, the thesis' fragment-mean injection);
+//          voxel.max_distance, and the other options (scene-centred cascade, the thesis'
+//          mean coverage instead of the max-axis default, injection at 4v, the thesis'
+//          fragment-mean injection);
 //   atlas: atlas.resolution, atlas.samples, atlas.estimator, atlas.visibility, and
 //          progressive accumulation over several frames (a separate plot series, since its
 //          image needs N frames of a static scene).
