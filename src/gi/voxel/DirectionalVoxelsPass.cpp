@@ -1,5 +1,6 @@
 #include "gi/voxel/DirectionalVoxelsPass.h"
 
+#include "gi/voxel/LevelDispatch.h"
 #include "gl/Shared.h"
 
 namespace gi::voxel {
@@ -23,15 +24,7 @@ void DirectionalVoxelsPass::execute(const Inputs& in, const Outputs& out,
     glBindImageTexture(BIND_IMG_VOXEL_DIRECTIONAL, t.directional.id(), 0, GL_TRUE, 0,
             GL_READ_WRITE, GL_RGBA16F);
     const GLuint groups = GLuint((t.resolution + VOXEL_LOCAL_SIZE - 1) / VOXEL_LOCAL_SIZE);
-    for (int level = 0; level < t.levels; ++level) {
-        glProgramUniform1i(mProgram.id(), LOC_VOXEL_LEVEL, level);
-        glDispatchCompute(groups, groups, groups);
-        // Consumer: the next level composites this one's faces.
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
-    // Consumers: the pyramid (image loads, covered above) and cone tracing's filtered reads.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    glUseProgram(0);
+    dispatchLevelByLevel(mProgram.id(), groups, 0, t.levels);
 }
 
 } // namespace gi::voxel

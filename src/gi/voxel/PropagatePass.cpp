@@ -1,5 +1,6 @@
 #include "gi/voxel/PropagatePass.h"
 
+#include "gi/voxel/LevelDispatch.h"
 #include "gl/Shared.h"
 
 namespace gi::voxel {
@@ -20,15 +21,7 @@ void PropagatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glBindImageTexture(BIND_IMG_VOXEL_NORMAL, t.normal.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA8_SNORM);
     glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, t.irradiance.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
     const GLuint groups = GLuint((t.resolution / 2 + VOXEL_LOCAL_SIZE - 1) / VOXEL_LOCAL_SIZE);
-    for (int level = 1; level < t.levels; ++level) {
-        glProgramUniform1i(mProgram.id(), LOC_VOXEL_LEVEL, level);
-        glDispatchCompute(groups, groups, groups);
-        // Consumer: the next level reads this one's results.
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
-    // Consumer: cone tracing and debug views sample the textures.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    glUseProgram(0);
+    dispatchLevelByLevel(mProgram.id(), groups, 1, t.levels);
 }
 
 } // namespace gi::voxel
