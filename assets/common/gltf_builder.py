@@ -222,7 +222,9 @@ class GltfWriter:
     def add_node(self, node):
         return self._node(node)
 
-    def add_material(self, name, rgb, double_sided=False):
+    def add_material(self, name, rgb, double_sided=False, emissive=None, emissive_strength=None):
+        """`emissive`: the emissiveFactor (linear RGB); `emissive_strength`: its
+        KHR_materials_emissive_strength multiplier, for radiance above 1 W/(m^2 sr)."""
         self.material_index[name] = len(self.doc["materials"])
         material = {
             "name": name,
@@ -234,6 +236,13 @@ class GltfWriter:
         }
         if double_sided:
             material["doubleSided"] = True
+        if emissive is not None:
+            material["emissiveFactor"] = list(emissive)
+        if emissive_strength is not None:
+            material["extensions"] = {
+                "KHR_materials_emissive_strength": {"emissiveStrength": emissive_strength}}
+            if "KHR_materials_emissive_strength" not in self.doc["extensionsUsed"]:
+                self.doc["extensionsUsed"].append("KHR_materials_emissive_strength")
         self.doc["materials"].append(material)
 
     def add_mesh_node(self, name, mesh, material, texcoords=False):

@@ -167,6 +167,28 @@ def build_cornell(generator=GENERATOR):
     return w, "cornell_box"
 
 
+# The same box lit only by an emissive panel filling the light opening, 1 mm under the
+# ceiling and facing down, with the radiance that gives the point light's intensity on its
+# axis: I = L x A, A = 0.130 m x 0.105 m, L = 0.3 / A = 21.98 W/(m^2 sr).
+CORNELL_PANEL_DROP_MM = 1.0
+CORNELL_PANEL_RADIANCE = round(CORNELL_LIGHT_INTENSITY / (0.130 * 0.105), 4)
+
+
+def build_cornell_emissive(generator=GENERATOR):
+    w = GltfWriter(generator)
+    add_cornell_materials(w)
+    w.add_material("light_panel", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0),
+                   emissive_strength=CORNELL_PANEL_RADIANCE)
+    add_cornell_geometry(w)
+    y = CORNELL_CEILING_Y_MM - CORNELL_PANEL_DROP_MM
+    panel = [cornell_to_gltf((x, y, z)) for x, _, z in CORNELL_LIGHT]
+    m = MeshBuilder()
+    m.add_quad(panel, (0.0, -1.0, 0.0))
+    w.add_mesh_node("light_panel", m, "light_panel")
+    add_cornell_camera(w)
+    return w, "cornell_box_emissive"
+
+
 # Analytic test scene: radiance of the floor is rho/pi * I cos(theta) / d^2.
 PLANE_HALF_SIZE = 1.0
 PLANE_ALBEDO = 0.5
@@ -232,6 +254,7 @@ def build_animated():
 VARIANTS = {
     "cornell": (build_cornell, ("cornell_box.gltf",)),
     "animated": (build_animated, ("cornell_box_animated.gltf",)),
+    "emissive": (build_cornell_emissive, ("cornell_box_emissive.gltf",)),
     "plane": (build_plane, ("..", "analytic", "plane_point_light.gltf")),
 }
 

@@ -26,6 +26,7 @@
 #define BIND_SSBO_SCENE_VERTICES    6   // float[14 per vertex]: GpuScene's vertices (SceneVertex)
 #define BIND_SSBO_ATLAS_VERTICES    7   // float[18 per vertex]: the atlas' vertices (GpuAtlasVertex)
 #define BIND_SSBO_ATLAS_SOURCES     8   // uint[]: per atlas vertex, the scene vertex it copies
+#define BIND_SSBO_EMITTERS          9   // GpuEmitter[], the triangles of every area light
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -167,6 +168,8 @@
 #define LIGHT_POINT                 0
 #define LIGHT_SPOT                  1
 #define LIGHT_DIRECTIONAL           2
+#define LIGHT_AREA                  3   // emitting triangles (GpuEmitter), shadowed from their centre
+#define LIGHT_SKY                   4   // constant radiance from every unblocked direction
 
 // Which radiance component a frame writes (--output).
 #define OUTPUT_FINAL                0
@@ -198,12 +201,23 @@ struct FrameUniforms {                  // std140
 };
 
 struct GpuLight {                       // std430
-    vec4 positionAndType;               // xyz = world position (m), w = LIGHT_* as float
+    vec4 positionAndType;               // xyz = world position (m; area: the emitters'
+                                        // centre), w = LIGHT_* as float
     vec4 directionAndRange;             // xyz = unit direction light travels, w = range (0 = inf)
     vec4 radiantIntensity;              // rgb = colour x intensity (W/sr, or W/m^2 for
-                                        // directional), w = unused
+                                        // directional; radiance W/(m^2 sr) for the sky),
+                                        // w = unused
     vec4 spotCone;                      // x = cos(inner), y = cos(outer), z = smallest
-                                        // squared distance 1/r^2 uses (m^2), w = unused
+                                        // squared distance 1/r^2 uses (m^2), w = unused;
+                                        // area: x = first GpuEmitter, y = their count
+};
+
+struct GpuEmitter {                     // std430, one triangle of an area light
+    vec4 p0;                            // xyz = corner (m), counter-clockwise seen from the
+    vec4 p1;                            // front; w = unused
+    vec4 p2;
+    vec4 radiance;                      // rgb = emitted radiance (W/(m^2 sr)), w = 1 if it
+                                        // emits from both sides
 };
 
 struct GpuMaterial {                    // std430

@@ -18,6 +18,8 @@ const char* lightTypeName(scene::LightType type) {
     case scene::LightType::Point: return "point";
     case scene::LightType::Spot: return "spot";
     case scene::LightType::Directional: return "directional";
+    case scene::LightType::Area: return "area";
+    case scene::LightType::Sky: return "sky";
     }
     return "?";
 }
@@ -64,6 +66,17 @@ void printLights(const scene::Scene& scene, const std::string& why) {
         std::printf("  [%zu] %-11s %s colour (%.3g, %.3g, %.3g) intensity %.4g", i,
                 lightTypeName(l.type), l.isDefault ? "(default)" : l.name.c_str(), l.color.r,
                 l.color.g, l.color.b, l.intensity);
+        if (l.type == scene::LightType::Area) {
+            float area = 0.0f;
+            for (const scene::EmitterTriangle& t : l.emitters) area += t.area();
+            std::printf(" %zu triangle(s), %.4g m^2, centre (%.4g, %.4g, %.4g)\n", l.emitters.size(),
+                    area, l.position.x, l.position.y, l.position.z);
+            continue;
+        }
+        if (l.type == scene::LightType::Sky) {
+            std::printf(" (radiance colour x intensity from every unblocked direction)\n");
+            continue;
+        }
         if (l.type != scene::LightType::Directional) {
             std::printf(" at (%.4g, %.4g, %.4g)", l.position.x, l.position.y, l.position.z);
         }

@@ -2,12 +2,20 @@
 
 #include "reference/EmbreeRayCaster.h"
 #include "scene/Animation.h"
+#include "scene/EmissionLights.h"
 #include "scene/GltfLoader.h"
 #include "scene/Recentre.h"
 
 #include <cstdio>
 
 namespace gi::app {
+namespace {
+
+// Emitting area, as a share of all surface area, from which emissive surfaces are taken to
+// light the scene by themselves (an emissive ceiling panel of a Cornell box: 0.7%).
+constexpr double kEmittingShareThatLights = 1e-3;
+
+} // namespace
 
 bool loadScene(const Config& config, scene::Scene& scene, std::string& error,
         scene::DefaultsReport* report) {
@@ -30,9 +38,26 @@ bool loadScene(const Config& config, scene::Scene& scene, std::string& error,
         light.position -= scene.origin;
         scene.lights.push_back(light);
     }
+    // Emissive surfaces are lights (scene/EmissionLights.h); they are geometry, so --light none
+    // keeps them. Emitters covering less than kEmittingShareThatLights of the surface light
+    // only their surroundings: such a scene also gets the default light, chosen as if it
+    // had no lights at all.
+    const scene::EmissionLightsReport emission = scene::addEmissionLights(scene);
+    const bool emittersLightScene = emission.emittingAreaShare >= kEmittingShareThatLights;
+    std::vector<scene::Light> weakEmitters;
+    if (emission.lights > 0 && !emittersLightScene) {
+        weakEmitters.assign(scene.lights.end() - std::ptrdiff_t(emission.lights), scene.lights.end());
+        scene.lights.resize(scene.lights.size() - emission.lights);
+    }
     std::string warning;
     scene::DefaultsReport defaults = reference::addDefaultsFromGeometry(scene, warning);
     if (!warning.empty()) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    scene.lights.insert(scene.lights.end(), weakEmitters.begin(), weakEmitters.end());
+    if (emission.lights > 0) {
+        const std::string what = "emissive surfaces: " + emission.summary;
+        defaults.lights = emittersLightScene || defaults.lights.empty()
+                ? what : what + ", too small to light the scene; " + defaults.lights;
+    }
     if (config.noLights) {
         std::erase_if(scene.lights, [](const scene::Light& light) { return light.isDefault; });
         defaults.lights.clear();

@@ -22,6 +22,8 @@ bool normalized(const glm::vec3& v, glm::vec3& unit) {
 } // namespace
 
 bool usableLight(const scene::Light& light, const glm::vec3& radiant) {
+    // Area and sky lights are not punctual: the path tracer finds their emission by hits.
+    if (light.type == scene::LightType::Area || light.type == scene::LightType::Sky) return false;
     const bool finite = std::isfinite(radiant.x) && std::isfinite(radiant.y) &&
                         std::isfinite(radiant.z) && std::isfinite(light.position.x) &&
                         std::isfinite(light.position.y) && std::isfinite(light.position.z);

@@ -24,7 +24,7 @@ void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     glDisable(GL_BLEND);
 
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
+    in.scene.bindLights();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     if (in.depthPrepass) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

@@ -121,14 +121,12 @@ std::vector<int> lightsReaching(const std::vector<scene::Light>& lights, const s
     }
     const glm::vec3 centre = bounds.center();
     const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-9f);
-    auto power = [](const scene::Light& l) {
-        return double(std::max(l.color.r, std::max(l.color.g, l.color.b))) * double(l.intensity);
-    };
+    auto power = [](const scene::Light& l) { return scene::lightStrength(l); };
     // The strongest irradiance any light gives at the scene's scale: point and spot lights at
     // the larger of their distance to the centre and the scene's radius.
     double strongest = 0.0;
     for (const scene::Light& l : lights) {
-        if (l.type == scene::LightType::Directional) {
+        if (scene::isDistant(l.type)) {
             strongest = std::max(strongest, power(l));
         } else {
             const double d = std::max(glm::length(l.position - centre), radius);
@@ -141,7 +139,7 @@ std::vector<int> lightsReaching(const std::vector<scene::Light>& lights, const s
             drop(l, i, "emits nothing");
             continue;
         }
-        if (l.type != scene::LightType::Directional) {
+        if (!scene::isDistant(l.type)) {
             const float d = distanceToBox(l.position, bounds);
             if (l.type == scene::LightType::Spot && d > 0.0f) {
                 const glm::vec3 toCentre = centre - l.position;

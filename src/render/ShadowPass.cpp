@@ -72,7 +72,9 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
         const scene::Light& light = lights[i];
         shader::GpuShadow& s = table[i];
         s.bias = glm::vec4(settings.normalOffset, settings.pcfRadius, 0.0f, 0.0f);
-        if (light.type == scene::LightType::Point) {
+        if (light.type == scene::LightType::Sky) continue;   // unshadowed here: cones see it
+        // An area light is shadowed as if all of it shone from its centre.
+        if (light.type == scene::LightType::Point || light.type == scene::LightType::Area) {
             const float far = farthestFrom(light.position, bounds);
             const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, far * 1e-4f, far);
             // Cube-map face order and up vectors of the GL specification (table 8.19).
@@ -185,7 +187,9 @@ std::vector<gl::MemoryItem> ShadowPass::memoryFor(const std::vector<scene::Light
     int layers2D = 0, layersCube = 0;
     for (const scene::Light& light : lights) {
         if (!settings.enabled) break;
-        (light.type == scene::LightType::Point ? layersCube : layers2D) += 1;
+        if (light.type == scene::LightType::Sky) continue;
+        (light.type == scene::LightType::Point || light.type == scene::LightType::Area ? layersCube
+                                                                                        : layers2D) += 1;
     }
     return memoryFor(layers2D, layersCube, settings.resolution);
 }

@@ -12,11 +12,9 @@ float characteristicIrradiance(const std::vector<Light>& lights, const Aabb& bou
     const double diagonal = std::max(double(glm::length(size)), 1e-6);
     double peak = std::isfinite(maxEmission) ? std::max(0.0, double(maxEmission)) * M_PI : 0.0;
     for (const Light& light : lights) {
-        const double power = double(std::max({light.color.x, light.color.y, light.color.z})) *
-                             double(light.intensity);
+        const double power = lightStrength(light);
         if (!std::isfinite(power) || power <= 0.0) continue;
-        peak = std::max(peak, light.type == LightType::Directional ? power
-                                                                   : power / (diagonal * diagonal));
+        peak = std::max(peak, isDistant(light.type) ? power : power / (diagonal * diagonal));
     }
     return float(std::min(peak, 1e38));
 }

@@ -174,21 +174,39 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
     const float minDistance = 1e-4f * std::max(glm::length(size), 1e-12f);
     const float minDistanceSquared = std::max(minDistance * minDistance, 1e-36f);
     std::vector<shader::GpuLight> table;
+    std::vector<shader::GpuEmitter> emitters;
     for (const Light& light : lights) {
         shader::GpuLight g{};
         const int type = light.type == LightType::Point ? LIGHT_POINT
                          : light.type == LightType::Spot ? LIGHT_SPOT
-                                                                : LIGHT_DIRECTIONAL;
+                         : light.type == LightType::Area ? LIGHT_AREA
+                         : light.type == LightType::Sky ? LIGHT_SKY
+                                                        : LIGHT_DIRECTIONAL;
         g.positionAndType = glm::vec4(light.position, float(type));
         g.directionAndRange = glm::vec4(glm::normalize(light.direction), light.range);
         g.radiantIntensity = glm::vec4(light.color * light.intensity * exposure, 0.0f);
         g.spotCone = glm::vec4(std::cos(light.innerConeAngle), std::cos(light.outerConeAngle),
                 minDistanceSquared, 0.0f);
+        if (light.type == LightType::Area) {
+            g.spotCone.x = float(emitters.size());
+            g.spotCone.y = float(light.emitters.size());
+            for (const EmitterTriangle& t : light.emitters) {
+                emitters.push_back({glm::vec4(t.p0, 0.0f), glm::vec4(t.p1, 0.0f), glm::vec4(t.p2, 0.0f),
+                        glm::vec4(t.radiance * exposure, t.twoSided ? 1.0f : 0.0f)});
+            }
+        }
         table.push_back(g);
     }
     mLightCount = int(table.size());
     mLights = gl::createBuffer(std::max<std::size_t>(table.size(), 1) * sizeof(shader::GpuLight),
             table.empty() ? nullptr : table.data(), 0, "scene/lights");
+    mEmitters = gl::createBuffer(std::max<std::size_t>(emitters.size(), 1) * sizeof(shader::GpuEmitter),
+            emitters.empty() ? nullptr : emitters.data(), 0, "scene/emitters");
+}
+
+void GpuScene::bindLights() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, mLights.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_EMITTERS, mEmitters.id());
 }
 
 void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray,

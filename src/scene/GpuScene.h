@@ -62,7 +62,8 @@ public:
 
     // Every vertex (SceneVertex), for passes that copy posed positions (atlas/follow_pose).
     const gl::Buffer& vertexBuffer() const { return mVertices; }
-    const gl::Buffer& lightBuffer() const { return mLights; }
+    // Binds the light table and the area lights' triangles (lighting.glsl reads both).
+    void bindLights() const;
     const gl::Buffer& materialBuffer() const { return mMaterials; }
     int lightCount() const { return mLightCount; }
     const Aabb& bounds() const { return mBounds; }
@@ -71,7 +72,7 @@ private:
     void uploadGeometry(const Scene& scene);
     void uploadMaterials(const Scene& scene);
 
-    gl::Buffer mVertices, mIndices, mMaterials, mLights;
+    gl::Buffer mVertices, mIndices, mMaterials, mLights, mEmitters;
     gl::VertexArray mVertexArray;
     std::vector<gl::Texture> mTextures;
     gl::Texture mWhite;                  // bound where a material has no texture

@@ -116,7 +116,23 @@ struct Animation {
     float duration = 0.0f;               // the last key time over all channels (s)
 };
 
-enum class LightType { Point, Spot, Directional };
+enum class LightType { Point, Spot, Directional, Area, Sky };
+
+// One triangle of an area light, in world space. Emissive surfaces become area lights
+// (scene/EmissionLights.h); their triangles keep where they came from so the path tracer can
+// weigh a bounce ray that hits one against sampling the light (multiple importance sampling).
+struct EmitterTriangle {
+    glm::vec3 p0{0.0f}, p1{0.0f}, p2{0.0f};   // counter-clockwise seen from the front side
+    glm::vec3 radiance{0.0f};            // W/(m^2 sr) per channel, uniform over the triangle:
+                                         // emissiveFactor x the emissive texture's mean over it
+    bool twoSided = false;               // emits from the back side too (doubleSided material)
+    int instance = -1;                   // into Scene::instances, -1 for a command-line light
+    int triangle = -1;                   // index of the triangle in the instance's primitive
+    int material = -1;                   // into Scene::materials, -1 for a command-line light
+    glm::vec3 normal() const;            // unit, front side (zero for a degenerate triangle)
+    float area() const;                  // m^2
+    bool operator==(const EmitterTriangle&) const = default;
+};
 
 struct Light {
     std::string name;
@@ -129,9 +145,22 @@ struct Light {
     float range = 0.0f;                  // 0 = infinite; never attenuates (DESIGN.md)
     float innerConeAngle = 0.0f;         // radians (spot)
     float outerConeAngle = 0.7853982f;   // radians (spot)
+    // Area: the emitting triangles. `position` is their area-weighted centre (where the
+    // shadow map looks from), `color` x `intensity` is unused (1): the radiance is per
+    // triangle. Sky: constant radiance colour x intensity (W/(m^2 sr)) from every direction
+    // no geometry blocks; an unoccluded plane receives E = pi L (DESIGN.md).
+    std::vector<EmitterTriangle> emitters;
     bool isDefault = false;              // added because the scene had no lights
     bool operator==(const Light&) const = default;
 };
+
+// How strong a light is, for choices that rank lights or set a scale: the largest channel of
+// colour x intensity (W/sr for point and spot lights, W/m^2 for directional ones); for an
+// area light its on-axis intensity, the sum of L x area over its triangles (W/sr); for the sky
+// the irradiance it gives an open plane, pi L (W/m^2). Directional lights and the sky light
+// everything alike (isDistant); the others fall off with distance.
+double lightStrength(const Light& light);
+inline bool isDistant(LightType type) { return type == LightType::Directional || type == LightType::Sky; }
 
 struct Camera {
     std::string name;

@@ -57,7 +57,7 @@ void AtlasGBufferPass::execute(const Inputs& in, const Outputs& out, gl::GpuProf
 
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
+    in.scene.bindLights();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     in.shadows.bind();
     // Triangles may land in the atlas with either winding: no culling in either draw.

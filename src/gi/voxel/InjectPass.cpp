@@ -49,6 +49,8 @@ std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const scene::Light& light = lights[i];
         const int index = int(i);
+        // The sky reaches voxels through the cones that escape the volume, not by injection.
+        if (light.type == scene::LightType::Sky) continue;
         if (light.type == scene::LightType::Directional) {
             const glm::vec3 center = region.center();
             const float radius = std::max(0.5f * glm::length(region.size()), 1e-6f);
@@ -138,7 +140,7 @@ void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& 
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             glEnable(GL_DEPTH_TEST);
             glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_LIGHTS, in.scene.lightBuffer().id());
+            in.scene.bindLights();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
             glBindImageTexture(BIND_IMG_VOXEL_HELPER, t.helper.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
             glBindImageTexture(BIND_IMG_VOXEL_LOCK, t.lock.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
