@@ -135,7 +135,9 @@ void main() {
     float nLength = length(vin.normal);
     vec3 n = nLength > 0.0 ? vin.normal / nLength : vec3(0.0, 1.0, 0.0);
     bool doubleSided = vin.doubleSided > 0.5;
-    vec3 emission = materialEmission(m, vin.texcoord0);
+    // Senders' emission is gathered as light, except where it already arrives as an area
+    // light's direct light.
+    vec3 emission = materialEmitsAsLight(m) ? vec3(0.0) : materialEmission(m, vin.texcoord0);
     outDirect = vec4(baseColor.rgb / PI * irradiance(n) + emission, 1.0);
     outDirectBack = doubleSided ? vec4(baseColor.rgb / PI * irradiance(-n) + emission, 1.0)
                                 : vec4(0.0);

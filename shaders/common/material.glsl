@@ -23,8 +23,13 @@ vec4 materialBaseColor(GpuMaterial m, vec2 uv0, vec2 uv1, vec4 vertexColor) {
 
 vec3 materialEmission(GpuMaterial m, vec2 uv0) {
     vec3 e = m.emissiveAndCutoff.rgb;
-    if (m.flags.y != 0) e *= texture(emissiveTexture, uv0).rgb;
+    if ((m.flags.y & MATERIAL_EMISSIVE_TEXTURE) != 0) e *= texture(emissiveTexture, uv0).rgb;
     return e;
+}
+
+// Whether the material's emission reaches other surfaces as an area light's direct light.
+bool materialEmitsAsLight(GpuMaterial m) {
+    return (m.flags.y & MATERIAL_EMITS_AS_LIGHT) != 0;
 }
 
 // For passes that shade with the base colour: whether its alpha cuts the fragment out.

@@ -180,6 +180,11 @@
 #define SHADOW_2D                   1
 #define SHADOW_CUBE                 2
 
+// GpuMaterial.flags.y bits.
+#define MATERIAL_EMISSIVE_TEXTURE   1   // the emission is multiplied by the emissive texture
+#define MATERIAL_EMITS_AS_LIGHT     2   // its emission is an area light's (LIGHT_AREA): passes
+                                        // that shade with lights must not count it again
+
 #define ALPHA_OPAQUE                0
 #define ALPHA_MASK                  1
 
@@ -223,7 +228,7 @@ struct GpuEmitter {                     // std430, one triangle of an area light
 struct GpuMaterial {                    // std430
     vec4 baseColorFactor;               // linear RGBA
     vec4 emissiveAndCutoff;             // rgb = emissive factor (linear), w = alpha cutoff
-    ivec4 flags;                        // x = has base-colour texture, y = has emissive texture,
+    ivec4 flags;                        // x = has base-colour texture, y = MATERIAL_* bits,
                                         // z = ALPHA_* mode, w = base-colour texcoord set (0/1)
 };
 

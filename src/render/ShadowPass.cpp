@@ -85,7 +85,7 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
                 const glm::mat4 view = glm::lookAt(light.position,
                         light.position + faces[std::size_t(face)].first, faces[std::size_t(face)].second);
                 mViews.push_back({projection * view, glm::vec4(light.position, far),
-                        layersCube * 6 + face, true});
+                        layersCube * 6 + face, true, light.type == scene::LightType::Area});
             }
             s.params = glm::vec4(SHADOW_CUBE, float(layersCube), far, 2.0f / resolution);
             ++layersCube;
@@ -158,7 +158,8 @@ void ShadowPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
                 &view.viewProjection[0][0]);
         glProgramUniform4fv(mProgram.id(), LOC_SHADOW_LIGHT_POSITION, 1, &view.lightPositionAndFar[0]);
         // Both faces cast: single-sided walls seen from behind still block light.
-        scene.drawAll(mProgram.id(), false);
+        scene.drawAll(mProgram.id(), false, nullptr,
+                view.areaLight ? scene::GpuScene::DrawSet::NotEmittingLight : scene::GpuScene::DrawSet::All);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -52,6 +52,7 @@ public:
         glm::vec4 lightPositionAndFar;   // w > 0: write distance / far (cube faces)
         int layer;                       // 2D layer, or cube layer * 6 + face
         bool cube;
+        bool areaLight = false;          // drawn without the area lights' own surfaces
     };
     // The views setLights planned (exposed for tests).
     const std::vector<View>& views() const { return mViews; }

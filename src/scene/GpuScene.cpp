@@ -124,7 +124,8 @@ void GpuScene::uploadMaterials(const Scene& scene) {
         shader::GpuMaterial g{};
         g.baseColorFactor = m.baseColorFactor;
         g.emissiveAndCutoff = glm::vec4(m.emissiveFactor, m.alphaCutoff);
-        g.flags = glm::ivec4(m.baseColorTexture >= 0, m.emissiveTexture >= 0,
+        g.flags = glm::ivec4(m.baseColorTexture >= 0,
+                m.emissiveTexture >= 0 ? MATERIAL_EMISSIVE_TEXTURE : 0,
                 m.alphaMode == AlphaMode::Mask ? ALPHA_MASK : ALPHA_OPAQUE,
                 m.baseColorTexCoord);
         table.push_back(g);
@@ -138,6 +139,7 @@ void GpuScene::uploadMaterials(const Scene& scene) {
     mBaseColorTexture.push_back(-1);
     mEmissiveTexture.push_back(-1);
     mMaterialTable = std::move(table);
+    mEmitsAsLight.assign(mMaterialTable.size(), false);
     for (const shader::GpuMaterial& m : mMaterialTable) {
         mMaxEmission = std::max({mMaxEmission, m.emissiveAndCutoff.r, m.emissiveAndCutoff.g,
                 m.emissiveAndCutoff.b});
@@ -158,15 +160,22 @@ void GpuScene::updateDynamic(const Scene& scene) {
 
 void GpuScene::setLights(const std::vector<Light>& lights) {
     const float exposure = preExposure(lights, mBounds, mMaxEmission);
-    if (!mMaterials || exposure != mExposure) {
-        std::vector<shader::GpuMaterial> exposed = mMaterialTable;
-        for (shader::GpuMaterial& m : exposed) {
-            m.emissiveAndCutoff = glm::vec4(glm::vec3(m.emissiveAndCutoff) * exposure,
-                    m.emissiveAndCutoff.w);
+    mEmitsAsLight.assign(mMaterialTable.size(), false);
+    for (const Light& light : lights) {
+        for (const EmitterTriangle& t : light.emitters) {
+            if (t.material >= 0 && std::size_t(t.material) < mEmitsAsLight.size()) {
+                mEmitsAsLight[std::size_t(t.material)] = true;
+            }
         }
-        mMaterials = gl::createBuffer(exposed.size() * sizeof(shader::GpuMaterial), exposed.data(),
-                0, "scene/materials");
     }
+    std::vector<shader::GpuMaterial> exposed = mMaterialTable;
+    for (std::size_t i = 0; i < exposed.size(); ++i) {
+        shader::GpuMaterial& m = exposed[i];
+        m.emissiveAndCutoff = glm::vec4(glm::vec3(m.emissiveAndCutoff) * exposure, m.emissiveAndCutoff.w);
+        if (mEmitsAsLight[i]) m.flags.y |= MATERIAL_EMITS_AS_LIGHT;
+    }
+    mMaterials = gl::createBuffer(exposed.size() * sizeof(shader::GpuMaterial), exposed.data(), 0,
+            "scene/materials");
     mExposure = exposure;
     // 1/r^2 is cut off within 1e-4 of the scene's size of a light (lighting.glsl): 0.1 mm in a
     // 1 m box, and the same fraction of a 1 mm or a 10 km one.
@@ -215,7 +224,8 @@ void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray
     glBindSampler(BIND_TEX_BASE_COLOR, 0);
     glBindSampler(BIND_TEX_EMISSIVE, 0);
     for (const Draw& draw : mDraws) {
-        if ((set == DrawSet::Static && draw.dynamic) || (set == DrawSet::Dynamic && !draw.dynamic)) {
+        if ((set == DrawSet::Static && draw.dynamic) || (set == DrawSet::Dynamic && !draw.dynamic) ||
+                (set == DrawSet::NotEmittingLight && mEmitsAsLight[std::size_t(draw.material)])) {
             continue;
         }
         if (cullBackFaces && !draw.doubleSided) glEnable(GL_CULL_FACE);

@@ -33,8 +33,9 @@ public:
         bool dynamic = false;           // an animated instance (Instance::dynamic)
     };
     // Which draws drawAll issues: passes that cache static geometry draw it once and the
-    // dynamic draws every frame.
-    enum class DrawSet { All, Static, Dynamic };
+    // dynamic draws every frame; an area light's shadow map leaves out the surfaces that are
+    // area lights (a light does not shadow itself; its centre may lie inside a closed emitter).
+    enum class DrawSet { All, Static, Dynamic, NotEmittingLight };
 
     explicit GpuScene(const Scene& scene);
 
@@ -79,6 +80,7 @@ private:
     gl::Sampler mSampler;
     std::vector<Draw> mDraws;
     std::vector<int> mBaseColorTexture, mEmissiveTexture;   // per material, -1 = none
+    std::vector<bool> mEmitsAsLight;     // per material: its emission is an area light's
     int mLightCount = 0;
     Aabb mBounds;
     // The material table as authored; uploaded with its emission times mExposure.

@@ -79,7 +79,7 @@ std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,
         const float pixel = 2.0f / pixels;   // tan(45 deg) = 1
         for (const auto& [direction, up] : faces) {
             views.push_back({index, projection * glm::lookAt(light.position, light.position + direction, up),
-                    direction, false, pixel * pixel});
+                    direction, false, pixel * pixel, light.type == scene::LightType::Area});
         }
     }
     return views;
@@ -153,11 +153,13 @@ void InjectPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& 
                 mTarget.clear();
                 glDepthFunc(GL_LESS);
                 glUseProgram(mDepthProgram.id());
-                in.scene.drawAll(mDepthProgram.id(), false);
+                const auto set = in.views[next].areaLight ? scene::GpuScene::DrawSet::NotEmittingLight
+                                                          : scene::GpuScene::DrawSet::All;
+                in.scene.drawAll(mDepthProgram.id(), false, nullptr, set);
                 glDepthFunc(GL_LEQUAL);
                 glDepthMask(GL_FALSE);
                 glUseProgram(mInjectProgram.id());
-                in.scene.drawAll(mInjectProgram.id(), false);
+                in.scene.drawAll(mInjectProgram.id(), false, nullptr, set);
                 // Consumer: the next view of this light continues the same running averages.
                 glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
             }

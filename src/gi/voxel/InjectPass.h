@@ -28,6 +28,7 @@ struct LightView {
     glm::vec3 axis{0.0f, 0.0f, -1.0f};   // unit forward axis of the view
     bool orthographic = false;
     float footprint = 0.0f;           // one pixel: sr on the axis (perspective) or m^2 (ortho)
+    bool areaLight = false;           // drawn without the area lights' own surfaces
 };
 
 // Views covering the scene inside the coarsest level, `resolution` pixels per side.
