@@ -29,6 +29,7 @@
 // Output: the sums of both sides (before the 1/N normalisation) added to the running sums by
 // blending.
 #include "atlas_common.glsl"
+#include "../common/constants.glsl"
 #ifdef VISIBILITY_VOXEL
 #include "voxel_visibility.glsl"
 #endif
@@ -54,6 +55,33 @@ uint hash(uint v) {
     v *= 0x846ca68bu;
     v ^= v >> 16;
     return v;
+}
+
+// The sky's irradiance on the side facing n (atlas.sky: its radiance and how many directions):
+// cosine-distributed directions, stratified in their polar coordinate and new for each
+// receiver and set, each seeing the sky unless the voxel occupancy blocks it on its way out of
+// the cascade (without voxel visibility nothing blocks it).
+vec3 skyIrradiance(vec3 x, vec3 n, uint seed) {
+    int directions = int(atlas.sky.w);
+    if (directions <= 0) return vec3(0.0);
+    vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
+    vec3 b = cross(n, t);
+    float visible = 0.0;
+    for (int i = 0; i < directions; ++i) {
+        float u1 = (float(i) + float(hash(seed + uint(2 * i)) >> 8) / 16777216.0) / float(directions);
+        float u2 = float(hash(seed + uint(2 * i + 1)) >> 8) / 16777216.0;
+        float r = sqrt(u1), phi = 2.0 * PI * u2;
+        vec3 w = normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(max(1.0 - u1, 0.0)) * n);
+#ifdef VISIBILITY_VOXEL
+        int coarsest = voxelLevels() - 1;
+        float toBoundary = exitDistance(x, w, levelOrigin(coarsest),
+                levelVoxelSize(coarsest) * float(voxelResolution()));
+        visible += toBoundary > 0.0 ? voxelTransmittance(x, n, x + w * toBoundary, -w) : 1.0;
+#else
+        visible += 1.0;
+#endif
+    }
+    return PI * atlas.sky.rgb * (visible / float(directions));
 }
 
 layout(location = 0) out vec4 outSum;
@@ -121,6 +149,10 @@ void main() {
         else sum += contribution;
     }
     float scale = area ? rowPower[resolution - 1] : atlas.sampling.z;
-    outSum = vec4(sum * scale, 1.0);
-    outSumBack = vec4(sumBack * scale, 1.0);
+    // The sums are divided by the samples accumulated: the sky's mean counts `count` times.
+    vec3 sky = skyIrradiance(x, nx, receiver * 7919u) * float(count);
+    vec3 skyBack = receiverTwoSided ? skyIrradiance(x, -nx, receiver * 7919u + 1u) * float(count)
+                                    : vec3(0.0);
+    outSum = vec4(sum * scale + sky, 1.0);
+    outSumBack = vec4(sumBack * scale + skyBack, 1.0);
 }

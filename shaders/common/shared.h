@@ -203,6 +203,8 @@ struct FrameUniforms {                  // std140
     ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
                                         // write, z = unused, w = 1 for depth-aware
                                         // upsampling of the indirect texture
+    vec4 sky;                           // rgb = radiance of the sky lights together
+                                        // (W/(m^2 sr)), seen where a cone escapes; w = unused
 };
 
 struct GpuLight {                       // std430
@@ -273,6 +275,8 @@ struct AtlasUniforms {                  // std140
                                         // 2 pi), w = 1 / samples accumulated
     vec4 dilation;                      // x = dilation radius (texels), y = 1 if the back-side
                                         // layers exist (double-sided materials), zw = unused
+    vec4 sky;                           // rgb = radiance of the sky lights together
+                                        // (W/(m^2 sr)), w = sky directions per receiver and set
 };
 
 #ifdef __cplusplus

@@ -72,6 +72,11 @@ void main() {
     if (indirectSize.x > 0.0) {
         float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
         indirect = baseColor.rgb / PI * indirectIrradiance(viewDepth);
+    } else {
+        // Without GI nothing tells where the sky is visible: it lights every surface as an
+        // open hemisphere over a black ground would, E = pi L (1 + n.y) / 2 (exact for an
+        // open floor, half for an open wall). With GI the gather sees it (cones, atlas).
+        radiance += baseColor.rgb * frame.sky.rgb * 0.5 * (1.0 + n.y);
     }
     if (frame.counts.y == OUTPUT_INDIRECT) radiance = indirect;
     else if (frame.counts.y == OUTPUT_FINAL) radiance += indirect;

@@ -3,8 +3,8 @@
 // or leaves the volume. Voxels facing away from the cone are skipped (thesis).
 //
 // Calibration (so the output is E_ind in W/m^2, DESIGN.md): a voxel's outgoing radiance is
-// albedo/pi * E; a cone returns the composited radiance L_i seen along it (no sky: an
-// escaping cone adds nothing); E_ind = pi * sum_i w_i L_i, where w_i is the fraction of the
+// albedo/pi * E; a cone returns the composited radiance L_i seen along it, and the sky's
+// radiance times what stays transparent where it escapes; E_ind = pi * sum_i w_i L_i, where w_i is the fraction of the
 // cosine-weighted hemisphere the cone stands for (central cap: sin^2(theta_b), each ring cone
 // cos^2(theta_b)/8, theta_b halfway between the central axis and the ring). The thesis'
 // weights (cos theta_i, normalised by their sum) differ from these by under 10%. Albedo and E
@@ -296,6 +296,9 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
         radiance += (1.0 - opacity) * light;
         opacity += (1.0 - opacity) * corrected;
     }
+    // What the cone has not met when it leaves the volume or reaches its range is the sky
+    // (unless it gave up after kMaxSteps inside).
+    if (steps < kMaxSteps) radiance += (1.0 - opacity) * frame.sky.rgb;
     return radiance;
 }
 

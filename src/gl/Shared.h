@@ -12,11 +12,11 @@ using glm::vec4;
 
 #include "common/shared.h"
 
-static_assert(sizeof(gi::shader::FrameUniforms) == 256, "FrameUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::FrameUniforms) == 272, "FrameUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuLight) == 64, "GpuLight std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuEmitter) == 64, "GpuEmitter std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuMaterial) == 48, "GpuMaterial std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
 static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 6,
         "VoxelUniforms std140 layout drifted");
-static_assert(sizeof(gi::shader::AtlasUniforms) == 3 * 16, "AtlasUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::AtlasUniforms) == 4 * 16, "AtlasUniforms std140 layout drifted");

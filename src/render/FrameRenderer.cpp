@@ -145,6 +145,7 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
                                                                : OUTPUT_INDIRECT;
     frame.screen = glm::vec4(glm::vec2(mRenderSize), 0.0f, 0.0f);
     frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, mSettings.voxel.depthUpsample ? 1 : 0);
+    frame.sky = glm::vec4(scene::skyRadiance(mLights) * mScene->exposure(), 0.0f);
     glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
 }
 

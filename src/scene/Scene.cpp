@@ -28,6 +28,14 @@ double lightStrength(const Light& light) {
     return light.type == LightType::Sky ? M_PI * strength : strength;
 }
 
+glm::vec3 skyRadiance(const std::vector<Light>& lights) {
+    glm::vec3 sum(0.0f);
+    for (const Light& light : lights) {
+        if (light.type == LightType::Sky) sum += light.color * light.intensity;
+    }
+    return sum;
+}
+
 std::size_t Scene::triangleCount() const {
     std::size_t n = 0;
     for (const Instance& instance : instances) n += primitives[instance.primitive].indices.size() / 3;

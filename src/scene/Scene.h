@@ -160,6 +160,8 @@ struct Light {
 // the irradiance it gives an open plane, pi L (W/m^2). Directional lights and the sky light
 // everything alike (isDistant); the others fall off with distance.
 double lightStrength(const Light& light);
+// The radiance of all sky lights together (colour x intensity summed), zero without a sky.
+glm::vec3 skyRadiance(const std::vector<Light>& lights);
 inline bool isDistant(LightType type) { return type == LightType::Directional || type == LightType::Sky; }
 
 struct Camera {

@@ -12,6 +12,10 @@
 namespace gi::atlas {
 namespace {
 
+// Directions each receiver casts towards the sky per sample set (gather.frag skyIrradiance):
+// sets accumulate, so a still view converges whatever this is; more only costs time.
+constexpr int kSkyDirectionsPerSet = 4;
+
 bool sameLights(const std::vector<scene::Light>& a, const std::vector<scene::Light>& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -19,7 +23,8 @@ bool sameLights(const std::vector<scene::Light>& a, const std::vector<scene::Lig
         const scene::Light& y = b[i];
         if (x.type != y.type || x.position != y.position || x.direction != y.direction ||
                 x.color != y.color || x.intensity != y.intensity || x.range != y.range ||
-                x.innerConeAngle != y.innerConeAngle || x.outerConeAngle != y.outerConeAngle) {
+                x.innerConeAngle != y.innerConeAngle || x.outerConeAngle != y.outerConeAngle ||
+                x.emitters != y.emitters) {
             return false;
         }
     }
@@ -131,7 +136,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     return true;
 }
 
-void AtlasGi::writeUniforms(const FramePlan& plan) {
+void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
     shader::AtlasUniforms u{};
     u.size = glm::ivec4(mSettings.resolution, mSettings.samples, mSettings.estimator, plan.view);
     // The area estimator's 1/r^2 stops growing within two texel edges of the receiver.
@@ -143,6 +148,8 @@ void AtlasGi::writeUniforms(const FramePlan& plan) {
     u.sampling = glm::vec4(plan.rotation, estimatorConstant, normalisation);
     u.dilation = glm::vec4(
             float((mSettings.gutter + 1) / 2), mTextures.backSides ? 1.0f : 0.0f, 0.0f, 0.0f);
+    const glm::vec3 sky = scene::skyRadiance(in.lights) * in.scene.exposure();
+    u.sky = glm::vec4(sky, sky != glm::vec3(0.0f) ? float(kSkyDirectionsPerSet) : 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
@@ -205,7 +212,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     }
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const FramePlan plan = planFrame(in, occupancy);
-    writeUniforms(plan);
+    writeUniforms(plan, in);
 
     if (plan.drawGBuffer) {
         mGBuffer.execute({in.scene, mGeometry, in.shadows, in.frameUniforms, mUniforms},

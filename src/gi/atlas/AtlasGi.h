@@ -77,7 +77,7 @@ private:
     // Decides this frame's work and records in mContent what the layers will hold after it.
     FramePlan planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy);
     // The frame's AtlasUniforms: the only write of the buffer per frame.
-    void writeUniforms(const FramePlan& plan);
+    void writeUniforms(const FramePlan& plan, const GiFrameInputs& in);
 
     AtlasMesh mMesh;
     bool mBackSides = false; // some material is double-sided (AtlasTextures)
