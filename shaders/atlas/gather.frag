@@ -30,6 +30,7 @@
 // blending.
 #include "atlas_common.glsl"
 #include "../common/constants.glsl"
+#include "../common/hash.glsl"
 #ifdef VISIBILITY_VOXEL
 #include "voxel_visibility.glsl"
 #endif
@@ -47,15 +48,6 @@ layout(std430, binding = BIND_SSBO_ATLAS_SENDER_POOL) readonly buffer SenderPool
     uint pool[];
 };
 
-// Integer hash (Wellons' lowbias32) for the per-receiver choice of points.
-uint hash(uint v) {
-    v ^= v >> 16;
-    v *= 0x7feb352du;
-    v ^= v >> 15;
-    v *= 0x846ca68bu;
-    v ^= v >> 16;
-    return v;
-}
 
 // The sky's irradiance on the side facing n (atlas.sky: its radiance and how many directions):
 // cosine-distributed directions, stratified in their polar coordinate and new for each

@@ -27,6 +27,8 @@
 #define BIND_SSBO_ATLAS_VERTICES    7   // float[18 per vertex]: the atlas' vertices (GpuAtlasVertex)
 #define BIND_SSBO_ATLAS_SOURCES     8   // uint[]: per atlas vertex, the scene vertex it copies
 #define BIND_SSBO_EMITTERS          9   // GpuEmitter[], the triangles of every area light
+#define BIND_SSBO_BVH_NODES         10  // vec4[2 per node]: the scene's BVH (reference/GpuBvh.h)
+#define BIND_SSBO_BVH_TRIANGLES     11  // vec4[3 per triangle]: its triangles' corners
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -176,6 +178,10 @@
 #define OUTPUT_DIRECT               1
 #define OUTPUT_INDIRECT             2
 
+// shadow.method: how the direct light the camera sees is shadowed.
+#define SHADOW_METHOD_SHADOWMAP     0   // shadow maps (area lights: from their centre)
+#define SHADOW_METHOD_BVH           1   // rays through the scene's BVH (GpuBvh)
+
 #define SHADOW_NONE                 0
 #define SHADOW_2D                   1
 #define SHADOW_CUBE                 2
@@ -205,6 +211,9 @@ struct FrameUniforms {                  // std140
                                         // upsampling of the indirect texture
     vec4 sky;                           // rgb = radiance of the sky lights together
                                         // (W/(m^2 sr)), seen where a cone escapes; w = unused
+    vec4 shadowing;                     // x = SHADOW_METHOD_*, y = shadow rays per area light,
+                                        // z = shadow-ray origin offset along the normal (m),
+                                        // w = unused
 };
 
 struct GpuLight {                       // std430

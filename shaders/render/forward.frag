@@ -6,7 +6,7 @@
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
-#include "../common/shadows.glsl"
+#include "../common/direct_visibility.glsl"
 
 layout(binding = BIND_TEX_INDIRECT) uniform sampler2D indirectTexture;
 layout(location = LOC_FORWARD_INDIRECT_SIZE) uniform vec2 indirectSize;   // (0, 0): none
@@ -55,13 +55,14 @@ void main() {
 
     vec3 radiance = materialEmission(m, vin.texcoord0);
     float ks = frame.shading.x, shininess = frame.shading.y;
+    uint random = hash(uint(gl_FragCoord.y) * 65536u + uint(gl_FragCoord.x));
     for (int i = 0; i < frame.counts.x; ++i) {
         vec3 e = lightIrradiance(lights[i], vin.position, n);
         if (all(equal(e, vec3(0.0)))) continue;
         vec3 toLight;
         float distance;
         lightDirection(lights[i], vin.position, toLight, distance);
-        if (frame.shading.w != 0.0) e *= shadowVisibility(i, vin.position, n, distance);
+        e *= directVisibility(i, vin.position, n, distance, random);
         radiance += baseColor.rgb / PI * e;
         if (frame.shading.z != 0.0) {
             vec3 h = normalize(toLight + toEye);

@@ -130,6 +130,12 @@ const std::vector<SettingSpec>& settingSpecs() {
                 0.0f, 16.0f, [](Settings& s) -> float& { return s.shadow.normalOffset; }),
         floatSetting("shadow.pcf_radius", "spacing of the PCF taps, in shadow texels", 0.0f, 8.0f,
                 [](Settings& s) -> float& { return s.shadow.pcfRadius; }),
+        choiceSetting("shadow.method",
+                "shadows of the direct light the camera sees: maps from each light's centre, "
+                "or rays through the scene's BVH",
+                {"shadowmap", "bvh"}, [](Settings& s) -> int& { return s.shadow.method; }),
+        intSetting("shadow.rays", "shadow rays per pixel and area light with shadow.method=bvh",
+                1, 1024, [](Settings& s) -> int& { return s.shadow.rays; }),
         intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
                 [](Settings& s) -> int& { return s.voxel.resolution; }),
         intSetting("voxel.cascades",

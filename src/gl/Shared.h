@@ -12,7 +12,7 @@ using glm::vec4;
 
 #include "common/shared.h"
 
-static_assert(sizeof(gi::shader::FrameUniforms) == 272, "FrameUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::FrameUniforms) == 288, "FrameUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuLight) == 64, "GpuLight std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuEmitter) == 64, "GpuEmitter std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuMaterial) == 48, "GpuMaterial std430 layout drifted");

@@ -126,6 +126,12 @@ void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
 void FrameRenderer::setPose(const scene::Scene& scene) {
     const gl::MemoryScope memoryScope(mMemory);
     mScene->updateDynamic(scene);
+    if (mSettings.shadow.method == SHADOW_METHOD_BVH && mSettings.shadow.enabled) {
+        std::string error;
+        if (!mBvhShadows.update(scene, mLights, mScene->geometryVersion(), error)) {
+            std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
+        }
+    }
     if (mScene->geometryVersion() != mShadowGeometry) {
         mShadowGeometry = mScene->geometryVersion();
         mShadows.invalidate();
@@ -146,6 +152,9 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
     frame.screen = glm::vec4(glm::vec2(mRenderSize), 0.0f, 0.0f);
     frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, mSettings.voxel.depthUpsample ? 1 : 0);
     frame.sky = glm::vec4(scene::skyRadiance(mLights) * mScene->exposure(), 0.0f);
+    // Shadow rays start 1e-4 of the scene's size off the surface, as far in any scene.
+    const float offset = 1e-4f * std::max(glm::length(mScene->bounds().size()), 1e-12f);
+    frame.shadowing = glm::vec4(float(mSettings.shadow.method), float(mSettings.shadow.rays), offset, 0.0f);
     glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
 }
 
@@ -179,6 +188,13 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
                 GL_TEXTURE_2D, 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
         return;
     }
+    if (mSettings.shadow.method == SHADOW_METHOD_BVH && mSettings.shadow.enabled) {
+        std::string error;
+        if (!mBvhShadows.update(*mSceneDescription, mLights, mScene->geometryVersion(), error)) {
+            std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
+        }
+    }
+    mBvhShadows.bind();
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
                              mSettings.depthPrepass},
             {mTarget}, profiler);

@@ -8,6 +8,7 @@
 #include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
+#include "render/BvhShadows.h"
 #include "render/ForwardPass.h"
 #include "render/OutputCatalog.h"
 #include "render/ResourcePlan.h"
@@ -103,6 +104,7 @@ private:
     OutputComponent mLastOutput = OutputComponent::Final;
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;
+    BvhShadows mBvhShadows;             // shadow.method=bvh
     std::uint64_t mShadowGeometry = 0;   // GpuScene::geometryVersion() the maps were drawn for
     GiMode mMode = GiMode::Direct;
     std::unique_ptr<GiTechnique> mGi;

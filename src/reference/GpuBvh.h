@@ -1,0 +1,41 @@
+// A bounding volume hierarchy over the scene's triangles for ray tracing in shaders (the
+// `bvh` shadow method, the exact baseline line-space visibility is measured against): built
+// by Embree's BVH builder (rtcBuildBVH: binned SAH, two children per node, at most
+// kMaxLeafTriangles per leaf) and flattened depth first, so the left child of node i is
+// node i + 1 and a shader walks the tree with a short stack (shaders/common/bvh.glsl).
+#pragma once
+
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gi::reference {
+
+inline constexpr unsigned kMaxLeafTriangles = 4;
+
+struct GpuBvh {
+    // Two vec4 per node, the layout of GpuBvhNode (shaders/common/shared.h):
+    // (min.xyz, inner: index of the right child / leaf: -(triangle count), as int bits),
+    // (max.xyz, leaf: first triangle, as int bits).
+    std::vector<glm::vec4> nodes;
+    std::vector<glm::vec4> triangles;   // three corners per triangle, world space, w = 0
+    int depth = 0;                      // longest root-to-leaf path (the shader's stack bound)
+    double buildSeconds = 0.0;
+    std::size_t nodeCount() const { return nodes.size() / 2; }
+    std::size_t triangleCount() const { return triangles.size() / 3; }
+    std::size_t bytes() const { return (nodes.size() + triangles.size()) * sizeof(glm::vec4); }
+};
+
+// Over every triangle of every instance in its current pose, except those `skip` returns true
+// for (instance index, triangle index); degenerate triangles are left out. False with `error`
+// when Embree fails.
+bool buildGpuBvh(const scene::Scene& scene,
+        const std::function<bool(std::size_t instance, std::size_t triangle)>& skip, GpuBvh& bvh,
+        std::string& error);
+
+} // namespace gi::reference

@@ -1,0 +1,47 @@
+#include "render/BvhShadows.h"
+
+#include "gl/Shared.h"
+
+#include <set>
+#include <utility>
+
+namespace gi::render {
+
+bool BvhShadows::update(const scene::Scene& scene, const std::vector<scene::Light>& lights,
+        std::uint64_t geometryVersion, std::string& error) {
+    std::vector<scene::EmitterTriangle> emitters;
+    for (const scene::Light& light : lights) {
+        emitters.insert(emitters.end(), light.emitters.begin(), light.emitters.end());
+    }
+    if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters) return true;
+    std::set<std::pair<int, int>> lightTriangles;
+    for (const scene::EmitterTriangle& t : emitters) lightTriangles.insert({t.instance, t.triangle});
+    reference::GpuBvh bvh;
+    const bool ok = reference::buildGpuBvh(scene,
+            [&](std::size_t instance, std::size_t triangle) {
+                return lightTriangles.count({int(instance), int(triangle)}) > 0;
+            },
+            bvh, error);
+    if (!ok) return false;
+    mBvh = std::move(bvh);
+    mNodes = gl::createBuffer(mBvh.nodes.size() * sizeof(glm::vec4), mBvh.nodes.data(), 0, "render/bvh/nodes");
+    mTriangles = gl::createBuffer(std::max<std::size_t>(mBvh.triangles.size(), 1) * sizeof(glm::vec4),
+            mBvh.triangles.empty() ? nullptr : mBvh.triangles.data(), 0, "render/bvh/triangles");
+    mBuilt = true;
+    mGeometryVersion = geometryVersion;
+    mEmitters = std::move(emitters);
+    return true;
+}
+
+void BvhShadows::bind() {
+    if (!mNodes) {
+        // An empty tree (one leaf that nothing meets) until the method is used.
+        const glm::vec4 empty[2] = {glm::vec4(1.0f, 1.0f, 1.0f, 0.0f), glm::vec4(-1.0f, -1.0f, -1.0f, 0.0f)};
+        mNodes = gl::createBuffer(sizeof empty, empty, 0, "render/bvh/nodes");
+        mTriangles = gl::createBuffer(sizeof(glm::vec4), nullptr, 0, "render/bvh/triangles");
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_BVH_NODES, mNodes.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_BVH_TRIANGLES, mTriangles.id());
+}
+
+} // namespace gi::render
