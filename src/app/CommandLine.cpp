@@ -1,53 +1,16 @@
 #include "app/CommandLine.h"
 
+#include "app/TextParsing.h"
 #include "core/ImageIO.h"
 
 #include <glm/gtc/constants.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 
 namespace gi::app {
 namespace {
-
-std::vector<std::string> split(const std::string& text, char separator) {
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream stream(text);
-    while (std::getline(stream, part, separator)) parts.push_back(part);
-    if (!text.empty() && text.back() == separator) parts.emplace_back();
-    return parts;
-}
-
-bool parseFloat(const std::string& text, float& value) {
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
-}
-
-bool parseInt(const std::string& text, int& value) {
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size();
-}
-
-bool parseFloats(const std::string& text, std::size_t count, std::vector<float>& values) {
-    const std::vector<std::string> parts = split(text, ',');
-    if (parts.size() != count) return false;
-    values.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (!parseFloat(parts[i], values[i])) return false;
-    }
-    return true;
-}
-
-bool parseVec3(const std::string& text, glm::vec3& v) {
-    std::vector<float> values;
-    if (!parseFloats(text, 3, values)) return false;
-    v = {values[0], values[1], values[2]};
-    return true;
-}
 
 std::optional<Command> parseCommand(const std::string& word) {
     if (word == "view") return Command::View;
@@ -66,54 +29,6 @@ std::string dataDirectory() {
 
 std::string defaultScenePath() {
     return dataDirectory() + "/assets/cornell_box/cornell_box.gltf";
-}
-
-bool parseLightSpec(const std::string& text, scene::Light& light, std::string& error) {
-    const std::vector<std::string> parts = split(text, ':');
-    const std::string kind = parts.empty() ? "" : parts[0];
-    error = "--light '" + text + "': expected point:x,y,z:r,g,b:intensity, "
-            "spot:x,y,z:dx,dy,dz:r,g,b:intensity[:inner_deg,outer_deg] or "
-            "dir:dx,dy,dz:r,g,b:intensity";
-    light = scene::Light{};
-    light.name = "command-line " + kind;
-    auto direction = [&](const std::string& part) {
-        glm::vec3 d;
-        if (!parseVec3(part, d) || glm::length(d) < 1e-12f) return false;
-        light.direction = glm::normalize(d);
-        return true;
-    };
-    auto colorAndIntensity = [&](const std::string& color, const std::string& intensity) {
-        return parseVec3(color, light.color) && parseFloat(intensity, light.intensity) &&
-               light.intensity >= 0.0f && light.color.r >= 0.0f && light.color.g >= 0.0f &&
-               light.color.b >= 0.0f;
-    };
-    if (kind == "point" && parts.size() == 4) {
-        light.type = scene::LightType::Point;
-        if (!parseVec3(parts[1], light.position) || !colorAndIntensity(parts[2], parts[3])) return false;
-    } else if (kind == "dir" && parts.size() == 4) {
-        light.type = scene::LightType::Directional;
-        if (!direction(parts[1]) || !colorAndIntensity(parts[2], parts[3])) return false;
-    } else if (kind == "spot" && (parts.size() == 5 || parts.size() == 6)) {
-        light.type = scene::LightType::Spot;
-        if (!parseVec3(parts[1], light.position) || !direction(parts[2]) ||
-                !colorAndIntensity(parts[3], parts[4])) {
-            return false;
-        }
-        if (parts.size() == 6) {
-            std::vector<float> cone;
-            if (!parseFloats(parts[5], 2, cone) || cone[0] < 0.0f || cone[1] <= cone[0] ||
-                    cone[1] > 90.0f) {
-                error = "--light '" + text + "': cone angles must satisfy 0 <= inner < outer <= 90";
-                return false;
-            }
-            light.innerConeAngle = glm::radians(cone[0]);
-            light.outerConeAngle = glm::radians(cone[1]);
-        }
-    } else {
-        return false;
-    }
-    error.clear();
-    return true;
 }
 
 bool parseCameraSpec(const std::string& text, CameraSpec& camera, std::string& error) {

@@ -3,6 +3,7 @@
 // one line, and main turns it into exit status 2.
 #pragma once
 
+#include "app/LightSpec.h"
 #include "app/PlanChoice.h"
 #include "bench/AccuracySuite.h"
 #include "bench/BenchSweep.h"
@@ -85,7 +86,6 @@ struct Config {
 [[nodiscard]] bool applyOption(Config& config, const std::string& flag, const std::string& value,
         std::string& error);
 
-[[nodiscard]] bool parseLightSpec(const std::string& text, scene::Light& light, std::string& error);
 [[nodiscard]] bool parseCameraSpec(const std::string& text, CameraSpec& camera, std::string& error);
 [[nodiscard]] bool parseKeyEvents(const std::string& text, std::vector<KeyEvent>& keys,
         std::string& error);

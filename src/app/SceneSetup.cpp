@@ -36,6 +36,11 @@ bool loadScene(const Config& config, scene::Scene& scene, std::string& error,
     // Command-line positions are in the file's coordinates.
     for (scene::Light light : config.extraLights) {
         light.position -= scene.origin;
+        for (scene::EmitterTriangle& t : light.emitters) {
+            t.p0 -= scene.origin;
+            t.p1 -= scene.origin;
+            t.p2 -= scene.origin;
+        }
         scene.lights.push_back(light);
     }
     // Emissive surfaces are lights (scene/EmissionLights.h); they are geometry, so --light none

@@ -48,6 +48,7 @@ void copyMaterials(const scene::Scene& scene, EmbreeState& state) {
         m.emissiveTexCoord = material.emissiveTexCoord;
         m.mask = material.alphaMode == scene::AlphaMode::Mask;
         m.alphaCutoff = material.alphaCutoff;
+        m.doubleSided = material.doubleSided;
         state.materials.push_back(m);
     }
     state.materials.push_back(ShadingMaterial{});
@@ -60,6 +61,7 @@ void appendInstances(const scene::Scene& scene, EmbreeState& state,
     const auto defaultMaterial = std::uint32_t(state.materials.size() - 1);
     std::vector<glm::uvec3> masked;
     std::vector<std::uint32_t> maskedMaterial;
+    std::vector<bool> instanceMasked;
     for (const scene::Instance& instance : scene.instances) {
         const scene::Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
         const auto base = std::uint32_t(state.positions.size());
@@ -85,6 +87,10 @@ void appendInstances(const scene::Scene& scene, EmbreeState& state,
                         ? std::uint32_t(primitive.material)
                         : defaultMaterial;
         const bool isMasked = state.materials[primitiveMaterial].mask;
+        instanceMasked.push_back(isMasked);
+        state.instanceTriangles.push_back({std::uint32_t(isMasked ? masked.size()
+                                                                  : state.triangles.size()),
+                std::uint32_t(primitive.indices.size() / 3)});
         for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
             const glm::uvec3 triangle(base + primitive.indices[t], base + primitive.indices[t + 1],
                     base + primitive.indices[t + 2]);
@@ -101,6 +107,9 @@ void appendInstances(const scene::Scene& scene, EmbreeState& state,
     state.firstTriangle[1] = std::uint32_t(state.triangles.size());
     state.triangles.insert(state.triangles.end(), masked.begin(), masked.end());
     material.insert(material.end(), maskedMaterial.begin(), maskedMaterial.end());
+    for (std::size_t i = 0; i < instanceMasked.size(); ++i) {
+        if (instanceMasked[i]) state.instanceTriangles[i].first += state.firstTriangle[1];
+    }
 }
 
 void computeTriangleInfo(EmbreeState& state, const std::vector<std::uint32_t>& material) {

@@ -3,6 +3,7 @@
 // geometry 1 alpha-masked ones, whose filter lets rays pass through cut-out texels).
 #pragma once
 
+#include "reference/SamplingMath.h"
 #include "reference/TextureSampling.h"
 #include "scene/Scene.h"
 
@@ -32,6 +33,7 @@ struct ShadingMaterial {
     int emissiveTexCoord = 0;
     bool mask = false;
     float alphaCutoff = 0.5f;
+    bool doubleSided = false;   // emits from both sides (DESIGN: front side otherwise)
 };
 
 struct EmbreeState;
@@ -52,6 +54,13 @@ struct FilterData {
     std::uint32_t firstTriangle = 0;
 };
 
+// Where one scene instance's triangles are in EmbreeState::triangles: [first, first + count),
+// in the primitive's order (an instance is wholly opaque or wholly masked).
+struct TriangleRange {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+};
+
 // World-space triangles of all instances with their shading attributes, and the Embree scene
 // over them: geometry 0 holds opaque triangles, geometry 1 alpha-masked ones (with filters).
 struct EmbreeState {
@@ -63,6 +72,7 @@ struct EmbreeState {
     std::vector<TriangleInfo> triangleInfo;        // per triangle, same order
     std::vector<ShadingMaterial> materials;        // scene materials + default white last
     std::uint32_t firstTriangle[2] = {0, 0};       // per Embree geometry id
+    std::vector<TriangleRange> instanceTriangles;  // per scene instance
     FilterData maskFilter;
 
     RTCDevice device = nullptr;
@@ -94,6 +104,24 @@ struct EmbreeState {
                     texcoord(triangle, m.baseColorTexCoord, u, v));
         }
         return color;
+    }
+
+    // Emitted radiance at barycentrics (u, v), on whichever side emits (see doubleSided).
+    glm::vec3 emission(std::uint32_t triangle, float u, float v) const {
+        const ShadingMaterial& m = materials[triangleInfo[triangle].material];
+        glm::vec3 le = m.emissiveFactor;
+        if (m.emissiveTexture && maxComponent(le) > 0.0f) {
+            le *= glm::vec3(sampleTexture(*m.emissiveTexture,
+                    texcoord(triangle, m.emissiveTexCoord, u, v)));
+        }
+        return le;
+    }
+
+    // Whether the triangle emits towards a viewer in direction `towards` from it (unit):
+    // front side (counter-clockwise) only, unless the material is double-sided.
+    bool emitsTowards(std::uint32_t triangle, const glm::vec3& towards) const {
+        const TriangleInfo& info = triangleInfo[triangle];
+        return materials[info.material].doubleSided || glm::dot(info.normal, towards) > 0.0f;
     }
 
     bool cutOut(std::uint32_t triangle, float u, float v) const {

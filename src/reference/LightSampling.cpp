@@ -22,12 +22,15 @@ bool normalized(const glm::vec3& v, glm::vec3& unit) {
 } // namespace
 
 bool usableLight(const scene::Light& light, const glm::vec3& radiant) {
-    // Area and sky lights are not punctual: the path tracer finds their emission by hits.
-    if (light.type == scene::LightType::Area || light.type == scene::LightType::Sky) return false;
-    const bool finite = std::isfinite(radiant.x) && std::isfinite(radiant.y) &&
-                        std::isfinite(radiant.z) && std::isfinite(light.position.x) &&
-                        std::isfinite(light.position.y) && std::isfinite(light.position.z);
-    return finite && maxComponent(radiant) > 0.0f;
+    if (light.type == scene::LightType::Area) {
+        return std::any_of(light.emitters.begin(), light.emitters.end(),
+                [](const scene::EmitterTriangle& t) {
+                    return isFinite(t.radiance) && maxComponent(t.radiance) > 0.0f &&
+                           isFinite(t.p0) && isFinite(t.p1) && isFinite(t.p2);
+                });
+    }
+    const bool positioned = light.type == scene::LightType::Sky || isFinite(light.position);
+    return isFinite(radiant) && positioned && maxComponent(radiant) > 0.0f;
 }
 
 float emissionPdf(const scene::Light& light) {

@@ -8,7 +8,15 @@
 
 namespace gi::reference {
 
-// False for lights that emit nothing or whose numbers are not finite (never NaN pixels).
+// Point, spot and directional lights: the ones lightGeometry() describes. Area lights are
+// sampled by AreaLightSampler, the sky by cosine-distributed rays (PathTracer.h).
+inline bool isPunctual(scene::LightType type) {
+    return type == scene::LightType::Point || type == scene::LightType::Spot ||
+           type == scene::LightType::Directional;
+}
+
+// False for lights that emit nothing or whose numbers are not finite (never NaN pixels);
+// `radiant` is colour x intensity. An area light is usable when one of its triangles is.
 bool usableLight(const scene::Light& light, const glm::vec3& radiant);
 
 // Direction density (per steradian) with which lightSubpathDirection samples a light's

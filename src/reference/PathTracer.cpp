@@ -20,7 +20,8 @@ constexpr float kShadowRayShortening = 1e-4f;
 
 PathTracer::PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
         const scene::CameraView& camera, int width, int height, int bounces)
-    : mState(state), mLights(lights), mWidth(width), mHeight(height), mBounces(bounces) {
+    : mState(state), mLights(lights), mAreaLights(state, lights), mWidth(width),
+      mHeight(height), mBounces(bounces) {
     const glm::dmat4 clipToWorld =
             glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
     mNear[0] = clipToWorld * glm::dvec4(0.0, 0.0, -1.0, 1.0);
@@ -30,13 +31,21 @@ PathTracer::PathTracer(const EmbreeState& state, const std::vector<scene::Light>
         unit[axis] = 1.0;
         mNear[axis + 1] = mFar[axis + 1] = clipToWorld * unit;
     }
-    for (const scene::Light& light : lights) mEmissionPdf.push_back(emissionPdf(light));
+    for (const scene::Light& light : lights) {
+        mEmissionPdf.push_back(emissionPdf(light));
+        const glm::vec3 radiance = light.color * light.intensity;
+        if (light.type == scene::LightType::Sky && usableLight(light, radiance)) mSky += radiance;
+    }
+    const bool emissive = std::any_of(state.materials.begin(), state.materials.end(),
+            [](const ShadingMaterial& m) { return maxComponent(m.emissiveFactor) > 0.0f; });
+    mClosingRay = emissive || maxComponent(mSky) > 0.0f;
 }
 
 // One path through continuous image coordinates (x, y), x in [0, width) left to right,
-// y in [0, height) top to bottom. u[0..1]: the first bounce direction, u[2..3]: the first
-// light's emission direction; everything else comes from `rng`. `lightVertices` is scratch
-// space reused between calls.
+// y in [0, height) top to bottom. u[0..1]: the camera hit's cosine ray, u[2..3]: the first
+// light's emission direction; everything else comes from `rng`. Numbers for area lights and
+// the closing ray are drawn only in scenes that have them, so other scenes keep their random
+// streams. `lightVertices` is scratch space reused between calls.
 PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
         std::vector<LightVertex>& lightVertices, RayCounts& counts) const {
     PathSample result;
@@ -50,17 +59,26 @@ PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
     Surface surface;
     if (!interact(rayHit, surface)) return result;
     result.hit = true;
-    result.direct = surface.emission + directLight(surface, -1.0f, incoherent, counts);
-    if (mBounces <= 0) return result;
+    result.direct = surface.emission;
+    if (mBounces > 0) sampleLightVertices(u + 2, rng, lightVertices, incoherent, counts);
 
-    sampleLightVertices(u + 2, rng, lightVertices, incoherent, counts);
     glm::vec3 throughput(1.0f);
-    for (int bounce = 0; bounce < mBounces; ++bounce) {
-        if (maxComponent(throughput * surface.albedo) <= 0.0f) break;
-        result.indirect += throughput * connect(surface, lightVertices, incoherent, counts);
+    float pdfArea = -1.0f;   // this vertex's density under cosine sampling from the last one
+    for (int vertex = 0;; ++vertex) {
+        glm::vec3& term = vertex == 0 ? result.direct : result.indirect;
+        const bool last = vertex == mBounces;
+        term += throughput * directLight(surface, pdfArea, incoherent, counts);
+        if (!mAreaLights.empty()) {
+            const float u1 = rng.nextFloat(), u2 = rng.nextFloat();
+            term += throughput * areaLight(surface, u1, u2, incoherent, counts);
+        }
+        if ((last && !mClosingRay) || maxComponent(throughput * surface.albedo) <= 0.0f) break;
+        if (!last) {
+            result.indirect += throughput * connect(surface, lightVertices, incoherent, counts);
+        }
         throughput *= surface.albedo;
-        const float u1 = bounce == 0 ? u[0] : rng.nextFloat();
-        const float u2 = bounce == 0 ? u[1] : rng.nextFloat();
+        const float u1 = vertex == 0 ? u[0] : rng.nextFloat();
+        const float u2 = vertex == 0 ? u[1] : rng.nextFloat();
         const glm::vec3 direction = sampleCosineHemisphere(surface.shadingNormal, u1, u2);
         const float cosSampled = glm::dot(direction, surface.shadingNormal);
         if (glm::dot(direction, surface.geometricNormal) <= 0.0f || cosSampled <= 0.0f) break;
@@ -68,14 +86,20 @@ PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
         rayHit = ray(origin, direction, std::numeric_limits<float>::infinity());
         ++counts.bounce;
         rtcIntersect1(mState.rtcScene, &incoherent, &rayHit);
-        if (!interact(rayHit, surface)) break;
+        if (!interact(rayHit, surface)) {
+            term += throughput * mSky;
+            break;
+        }
         const glm::vec3 step = surface.position - origin;
         const float distance2 = glm::dot(step, step);
-        const float pdfArea = cosSampled * glm::one_over_pi<float>() *
+        if (maxComponent(surface.emission) > 0.0f) {
+            term += throughput * surface.emission *
+                    bounceEmissionWeight(surface, cosSampled, distance2, direction);
+        }
+        if (last) break;
+        pdfArea = cosSampled * glm::one_over_pi<float>() *
                 std::abs(glm::dot(surface.geometricNormal, direction)) /
                 std::max(distance2, std::numeric_limits<float>::min());
-        result.indirect += throughput *
-                (surface.emission + directLight(surface, pdfArea, incoherent, counts));
     }
     return result;
 }
@@ -127,13 +151,10 @@ bool PathTracer::interact(const RTCRayHit& rayHit, Surface& surface) const {
     surface.shadingNormal = ns;
     surface.offset = info.offset;
 
-    const ShadingMaterial& m = mState.materials[info.material];
+    surface.triangle = triangle;
     surface.albedo = glm::vec3(mState.baseColor(triangle, u, v));
-    surface.emission = m.emissiveFactor;
-    if (m.emissiveTexture && maxComponent(m.emissiveFactor) > 0.0f) {
-        surface.emission *= glm::vec3(sampleTexture(*m.emissiveTexture,
-                mState.texcoord(triangle, m.emissiveTexCoord, u, v)));
-    }
+    surface.emission = mState.emitsTowards(triangle, incoming) ? mState.emission(triangle, u, v)
+                                                              : glm::vec3(0.0f);
     return true;
 }
 
@@ -157,7 +178,7 @@ glm::vec3 PathTracer::directLight(const Surface& surface, float pdfArea,
     for (std::size_t i = 0; i < mLights.size(); ++i) {
         const scene::Light& light = mLights[i];
         const glm::vec3 radiant = light.color * light.intensity;
-        if (!usableLight(light, radiant)) continue;
+        if (!isPunctual(light.type) || !usableLight(light, radiant)) continue;
         glm::vec3 wi;
         float distance = 0.0f, factor = 0.0f;
         if (!lightGeometry(light, surface.position, wi, distance, factor)) continue;
@@ -177,6 +198,55 @@ glm::vec3 PathTracer::directLight(const Surface& surface, float pdfArea,
         sum += radiant * (factor * cosTheta * weight);
     }
     return surface.albedo * glm::one_over_pi<float>() * sum;
+}
+
+// Area lights at x by one point sampled from them (AreaLightSampling.h) and a visibility ray
+// that stops just in front of it: rho/pi Le cos_x / pL x weight, pL the solid-angle density.
+// A point on scene geometry could also be found by x's cosine ray (always cast when the scene
+// has emissive surfaces): then the weight is pL / (pL + pB), otherwise 1.
+glm::vec3 PathTracer::areaLight(const Surface& x, float u1, float u2,
+        RTCIntersectContext& context, RayCounts& counts) const {
+    EmitterSample y;
+    if (maxComponent(x.albedo) <= 0.0f || !mAreaLights.sample(u1, u2, y)) return glm::vec3(0.0f);
+    const glm::vec3 toY = y.position - x.position;
+    const float distance2 = glm::dot(toY, toY);
+    if (!(distance2 > 0.0f) || !std::isfinite(distance2)) return glm::vec3(0.0f);
+    const glm::vec3 wi = toY / std::sqrt(distance2);
+    const float cosX = glm::dot(x.shadingNormal, wi);
+    const float cosFront = -glm::dot(y.normal, wi);   // > 0: x sees the front side
+    const float cosY = y.twoSided ? std::abs(cosFront) : cosFront;
+    if (cosX <= 0.0f || glm::dot(x.geometricNormal, wi) <= 0.0f || !(cosY > 0.0f)) {
+        return glm::vec3(0.0f);
+    }
+    const float pdfLight = y.pdfArea * distance2 / cosY;
+    if (!(pdfLight > 0.0f) || !std::isfinite(pdfLight)) return glm::vec3(0.0f);
+    const glm::vec3 origin = offsetOrigin(x);
+    const glm::vec3 target = y.position + std::copysign(y.offset, cosFront) * y.normal;
+    const glm::vec3 span = target - origin;
+    const float length = glm::length(span);
+    if (!(length > 0.0f) ||
+            occluded(origin, span / length, length * (1.0f - kShadowRayShortening), context,
+                    counts)) {
+        return glm::vec3(0.0f);
+    }
+    float weight = 1.0f;
+    if (y.onGeometry) {
+        weight = pdfLight / (pdfLight + cosX * glm::one_over_pi<float>());
+    }
+    return x.albedo * glm::one_over_pi<float>() * y.radiance * (cosX / pdfLight * weight);
+}
+
+// MIS weight of emission a cosine-sampled bounce ray found at `hit`: pB / (pB + pL) when the
+// triangle is part of an area light (NEE at the bounce's origin could have picked the point),
+// otherwise 1.
+float PathTracer::bounceEmissionWeight(const Surface& hit, float cosSampled, float distance2,
+        const glm::vec3& direction) const {
+    const float pdfArea = mAreaLights.pdfArea(hit.triangle);
+    const float cosY = std::abs(glm::dot(hit.geometricNormal, direction));
+    if (!(pdfArea > 0.0f) || !(cosY > 0.0f)) return 1.0f;
+    const float pdfBounce = cosSampled * glm::one_over_pi<float>();
+    const float pdfLight = pdfArea * distance2 / cosY;
+    return std::isfinite(pdfLight) ? pdfBounce / (pdfBounce + pdfLight) : 0.0f;
 }
 
 // Samples one light vertex per point or spot light (the first light uses the stratified

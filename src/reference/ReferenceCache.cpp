@@ -76,6 +76,17 @@ void hashScene(const scene::Scene& scene, Hasher& h) {
         h.value(light.intensity);
         h.value(light.innerConeAngle);
         h.value(light.outerConeAngle);
+        h.value(std::uint64_t(light.emitters.size()));
+        for (const scene::EmitterTriangle& t : light.emitters) {
+            h.value(t.p0);
+            h.value(t.p1);
+            h.value(t.p2);
+            h.value(t.radiance);
+            h.value(t.twoSided);
+            h.value(t.instance);
+            h.value(t.triangle);
+            h.value(t.material);
+        }
     }
 }
 

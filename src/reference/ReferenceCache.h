@@ -20,8 +20,10 @@
 
 namespace gi::reference {
 
-// Bump whenever the renderer's output for the same inputs changes.
-constexpr int kReferenceCacheFormat = 1;
+// Bump whenever the renderer's output for the same inputs changes. 2: area lights and the sky
+// sampled (next-event estimation), emission from the front side only, and emission found by
+// the bounce from the camera hit counted as direct light.
+constexpr int kReferenceCacheFormat = 2;
 
 // 32 lowercase hex digits.
 [[nodiscard]] std::string referenceCacheKey(const scene::Scene& scene,

@@ -2,16 +2,23 @@
 // DESIGN.md exactly (up to Monte Carlo noise), for scoring the voxel and atlas GI modes.
 // - Surfaces are Lambertian, f = rho/pi, rho = baseColorFactor x base-colour texture (sRGB
 //   decoded, bilinear, with the sampler's wrap modes) x COLOR_0; emission Le = emissiveFactor x
-//   emissive texture, from both sides. alphaMode MASK cut-outs are Embree filter functions.
+//   emissive texture, from the front side (both sides when doubleSided). alphaMode MASK
+//   cut-outs are Embree filter functions.
 // - Punctual lights by next-event estimation with shadow rays: E = I cos(theta)/d^2 (point),
 //   x s^2 (spot), E = I cos(theta) (directional); glTF `range` is never applied.
+// - Area lights (emissive surfaces, command-line rectangles) by next-event estimation too: a
+//   point picked over all their triangles in proportion to power, with a shadow ray, combined
+//   by multiple importance sampling with the cosine rays that hit the same triangles. The sky
+//   (constant radiance L) by the cosine rays that escape: an open plane shows rho L.
 // - Indirect light by cosine-weighted hemisphere sampling (pdf = cos/pi, so the throughput is
 //   multiplied by rho), for exactly `bounces` bounces and no Russian roulette: with bounces = 1
-//   the secondary hit adds only its emission and direct light (PBRT 3rd ed. 14.5 "path
-//   tracing", 13.6.3 cosine-weighted hemisphere sampling). Light that point and spot lights
-//   send to later vertices is also sampled from the light (a one-vertex light subpath joined
-//   to the path), and both estimates are combined by multiple importance sampling (Veach 1997
-//   ch. 9): a light close to a wall then does not turn into fireflies in the indirect image.
+//   the secondary hit adds its direct light from every kind of light, i.e. every light reaches
+//   the image after at most bounces + 1 scatterings (PBRT 3rd ed. 14.5 "path tracing", 13.6.3
+//   cosine-weighted hemisphere sampling). Light that point and spot lights send to later
+//   vertices is also sampled from the light (a one-vertex light subpath joined to the path),
+//   and both estimates are combined by multiple importance sampling (Veach 1997 ch. 9): a
+//   light close to a wall then does not turn into fireflies in the indirect image.
+//   PathTracer.h has the estimators in full.
 // - A pixel is the mean radiance over its square: paths start at stratified positions over
 //   the whole pixel (Owen-scrambled Sobol', see OwenSobol.h, which also stratifies the first
 //   bounce and the first light's emission). Each pixel's numbers are seeded from (seed, pixel
@@ -40,9 +47,11 @@ using ProgressCallback = std::function<void(double fraction)>;
 
 struct RayCounts {
     std::uint64_t primary = 0;   // camera rays
-    std::uint64_t shadow = 0;    // visibility rays: towards punctual lights (next-event
-                                 // estimation) and between a path and a light vertex
-    std::uint64_t bounce = 0;    // continuation rays sampled from the BRDF
+    std::uint64_t shadow = 0;    // visibility rays: towards punctual lights and points of
+                                 // area lights (next-event estimation) and between a path
+                                 // and a light vertex
+    std::uint64_t bounce = 0;    // rays sampled from the BRDF (continuations, and the last
+                                 // vertex's closing ray in scenes with emission or a sky)
     std::uint64_t light = 0;     // rays sampled from a light's emission (light vertices)
     std::uint64_t total() const { return primary + shadow + bounce + light; }
 };
@@ -69,8 +78,10 @@ struct NoiseEstimate {
 
 struct ReferenceResult {
     core::Image direct;        // linear radiance: emission seen directly + direct light at
-                                 // the first hit
-    core::Image indirect;      // everything after the first bounce: final - direct
+                                 // the first hit (from every light, emissive surfaces and
+                                 // the sky included)
+    core::Image indirect;      // everything after the first surface's direct light:
+                                 // final - direct
     core::Image final;         // direct + indirect
     std::vector<float> coverage; // width * height, rows top to bottom: fraction of the pixel's
                                  // paths whose camera ray hit geometry, in [0, 1]

@@ -1,5 +1,5 @@
-// Small vector helpers the path tracer and its light sampling share: component maxima, an
-// orthonormal basis around a direction, and cosine-weighted hemisphere sampling.
+// Small vector helpers the path tracer and its light sampling share: component maxima and
+// finiteness, an orthonormal basis around a direction, and cosine-weighted hemisphere sampling.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -15,6 +15,10 @@ inline float maxAbs(const glm::vec3& v) {
 }
 
 inline float maxComponent(const glm::vec3& v) { return std::max({v.x, v.y, v.z}); }
+
+inline bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // Orthonormal basis around a unit vector (Duff et al., "Building an Orthonormal Basis,
 // Revisited", JCGT 6(1), 2017).

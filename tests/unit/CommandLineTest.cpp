@@ -80,6 +80,40 @@ TEST(CommandLine, ParsesCameraSpecAndLights) {
     EXPECT_NEAR(config->extraLights[2].outerConeAngle, glm::radians(30.0f), 1e-6f);
 }
 
+TEST(CommandLine, ParsesSkyAndRectLights) {
+    std::string error;
+    const auto config = parse({"render", "s.gltf", "--out", "a.png", "--light",
+                                      "sky:0.5,0.75,1:2", "--light",
+                                      "rect:1,2,3:0.4,0,0:0,0,-0.2:1,0.5,0.25:8"},
+            error);
+    ASSERT_TRUE(config) << error;
+    ASSERT_EQ(config->extraLights.size(), 2u);
+    const scene::Light& sky = config->extraLights[0];
+    EXPECT_EQ(sky.type, scene::LightType::Sky);
+    EXPECT_EQ(sky.color * sky.intensity, glm::vec3(1.0f, 1.5f, 2.0f)) << "radiance";
+    const scene::Light& rect = config->extraLights[1];
+    EXPECT_EQ(rect.type, scene::LightType::Area);
+    EXPECT_EQ(rect.position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(rect.direction, glm::vec3(0, 1, 0)) << "cross(u, v) faces +y";
+    ASSERT_EQ(rect.emitters.size(), 2u);
+    float area = 0.0f;
+    glm::vec3 lowest(1e9f), highest(-1e9f);
+    for (const scene::EmitterTriangle& t : rect.emitters) {
+        area += t.area();
+        EXPECT_NEAR(glm::dot(t.normal(), glm::vec3(0, 1, 0)), 1.0f, 1e-6f) << "front side up";
+        EXPECT_EQ(t.radiance, glm::vec3(8.0f, 4.0f, 2.0f));
+        EXPECT_FALSE(t.twoSided);
+        EXPECT_EQ(t.instance, -1) << "not scene geometry";
+        for (const glm::vec3& p : {t.p0, t.p1, t.p2}) {
+            lowest = glm::min(lowest, p);
+            highest = glm::max(highest, p);
+        }
+    }
+    EXPECT_NEAR(area, 0.08f, 1e-6f);
+    EXPECT_EQ(lowest, glm::vec3(0.8f, 2.0f, 2.9f));
+    EXPECT_EQ(highest, glm::vec3(1.2f, 2.0f, 3.1f));
+}
+
 TEST(CommandLine, ParsesViewScripting) {
     std::string error;
     const auto config = parse({"view", "--frames", "5", "--screenshot", "s.png", "--keys", "2:G,4:F12"},
@@ -133,6 +167,22 @@ INSTANTIATE_TEST_SUITE_P(BadInput, CommandLineRejects, ::testing::Values(
         Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "dir:0,0,0:1,1,1:2"}, "--light"},
         Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
                           "spot:0,2,0:0,-1,0:1,1,1:10:40,30"}, "cone"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "sky:1,1,1"}, "sky:r,g,b"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "sky:1,-1,1:1"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "sky:1,1,1:inf"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light", "sky:1,1,1:1:2"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "rect:0,1,0:1,0,0:2,0,0:1,1,1:5"}, "non-zero"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "rect:0,1,0:0,0,0:0,0,1:1,1,1:5"}, "non-zero"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "rect:0,1,0:3e38,0,0:0,0,3e38:1,1,1:5"}, "finite"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "rect:0,1,0:1,0,0:0,0,1:1,1,1:-5"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "rect:0,nan,0:1,0,0:0,0,1:1,1,1:5"}, "--light"},
+        Rejection{{"render", "s.gltf", "--out", "a.png", "--light",
+                          "rect:0,1,0:1,0,0:0,0,1:1,1,1"}, "rect:cx"},
         Rejection{{"render", "s.gltf", "--out", "a.png", "--set", "x"}, "key=value"},
         Rejection{{"render", "s.gltf", "--out", "a.png", "--set", "material.specular=nan"}, "material.specular"},
         Rejection{{"render", "s.gltf", "--out", "a.tga"}, ".png"},

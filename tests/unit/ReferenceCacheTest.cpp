@@ -111,6 +111,25 @@ TEST(ReferenceCache, KeyCoversEveryInput) {
             << "the image does not depend on the thread count";
     EXPECT_TRUE(differs([](Fixture& f) { f.scene.lights[0].intensity = 2.0f; }));
     EXPECT_TRUE(differs([](Fixture& f) { f.scene.lights.push_back(scene::Light{}); }));
+    scene::Light area;
+    area.type = scene::LightType::Area;
+    area.emitters.push_back({glm::vec3(0.0f), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1)});
+    EXPECT_TRUE(differs([&](Fixture& f) { f.scene.lights.push_back(area); }));
+    area.emitters[0].radiance = glm::vec3(1.0f);
+    const auto withArea = [&](Fixture& f) { f.scene.lights.push_back(area); };
+    Fixture emitting;
+    withArea(emitting);
+    auto differsFromArea = [&](auto change) {
+        Fixture f;
+        withArea(f);
+        change(f.scene.lights.back());
+        return f.key() != emitting.key();
+    };
+    EXPECT_TRUE(differsFromArea([](scene::Light& l) { l.emitters[0].p2.x += 1e-6f; }));
+    EXPECT_TRUE(differsFromArea([](scene::Light& l) { l.emitters[0].radiance.b = 2.0f; }));
+    EXPECT_TRUE(differsFromArea([](scene::Light& l) { l.emitters[0].twoSided = true; }));
+    EXPECT_TRUE(differsFromArea([](scene::Light& l) { l.emitters[0].instance = 0; }));
+    EXPECT_TRUE(differsFromArea([](scene::Light& l) { l.type = scene::LightType::Sky; }));
     EXPECT_TRUE(differs([](Fixture& f) { f.scene.materials[0].baseColorFactor.g = 0.5f; }));
     EXPECT_TRUE(differs([](Fixture& f) { f.scene.primitives[0].positions[0].x += 1e-6f; }));
     EXPECT_TRUE(differs([](Fixture& f) { f.camera.view[3][0] += 0.01f; }));
