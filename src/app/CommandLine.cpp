@@ -1,6 +1,8 @@
 #include "app/CommandLine.h"
 
 #include "app/TextParsing.h"
+#include "app/ViewOptions.h"
+
 #include "core/ImageIO.h"
 
 #include <glm/gtc/constants.hpp>
@@ -47,21 +49,6 @@ bool parseCameraSpec(const std::string& text, CameraSpec& camera, std::string& e
     if (glm::length(camera.target - camera.eye) <= 0.0f) {
         error = "--camera '" + text + "': eye and target coincide";
         return false;
-    }
-    return true;
-}
-
-bool parseKeyEvents(const std::string& text, std::vector<KeyEvent>& keys, std::string& error) {
-    for (const std::string& item : split(text, ',')) {
-        const std::size_t colon = item.find(':');
-        KeyEvent event;
-        if (colon == std::string::npos || !parseInt(item.substr(0, colon), event.frame) ||
-                event.frame < 0 || colon + 1 >= item.size()) {
-            error = "--keys '" + text + "': expected FRAME:KEY,... (e.g. 2:G,4:F12)";
-            return false;
-        }
-        event.key = item.substr(colon + 1);
-        keys.push_back(event);
     }
     return true;
 }
@@ -246,27 +233,6 @@ bool applyTime(Config& config, const std::string&, const std::string& v, std::st
     return true;
 }
 
-bool applyFrames(Config& config, const std::string&, const std::string& v, std::string& error) {
-    if (!parseInt(v, config.frames) || config.frames < 1) {
-        error = "--frames '" + v + "': expected a positive integer";
-        return false;
-    }
-    return true;
-}
-
-bool applyScreenshot(Config& config, const std::string&, const std::string& v, std::string& error) {
-    if (!core::hasExtension(v, ".png")) {
-        error = "--screenshot " + v + ": the screenshot must be a .png file";
-        return false;
-    }
-    config.screenshotPath = v;
-    return true;
-}
-
-bool applyKeys(Config& config, const std::string&, const std::string& v, std::string& error) {
-    return parseKeyEvents(v, config.keys, error);
-}
-
 bool applyQuick(Config& config, const std::string&, const std::string&, std::string&) {
     config.sweep = bench::SweepSize::Quick;
     return true;
@@ -305,7 +271,7 @@ bool applyScene(Config& config, const std::string&, const std::string& v, std::s
 
 constexpr OptionSpec kOptions[] = {
         {"--out", kRender, true, applyOut},
-        {"--hdr", kRender, true, applyHdr},
+        {"--hdr", kRender | kView, true, applyHdr},
         {"--timings", kRender, true, applyTimings},
         {"--mode", kRender | kView, true, applyMode},
         {"--output", kRender, true, applyOutput},
@@ -317,12 +283,14 @@ constexpr OptionSpec kOptions[] = {
         {"--set", kRender | kView | kBench | kInfo, true, applySet},
         {"--exposure", kRender | kView, true, applyExposure},
         {"--tonemap", kRender | kView, true, applyToneCurve},
-        {"--move", kRender, true, applyMove},
+        {"--move", kRender | kView, true, applyMove},
+        {"--move-frames", kView, true, applyMoveFrames},
         {"--animate", kRender, true, applyAnimate},
         {"--time", kRender | kView, true, applyTime},
         {"--frames", kView, true, applyFrames},
         {"--screenshot", kView, true, applyScreenshot},
         {"--keys", kView, true, applyKeys},
+        {"--drop", kView, true, applyDrop},
         {"--quick", kBench, false, applyQuick},
         {"--sweep", kBench, true, applySweep},
         {"--suite", kBench, true, applySuite},

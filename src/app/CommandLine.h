@@ -34,13 +34,19 @@ struct KeyEvent {
     std::string key;   // GLFW-style name: "G", "1", "F12", "SPACE", ...
 };
 
+// `view --drop FRAME:FILE`: a file dropped on the window at a frame, for scripted viewer runs.
+struct DropEvent {
+    int frame = 0;
+    std::string path;
+};
+
 struct Config {
     Command command = Command::View;
     Command helpFor = Command::View;        // Help: which command's help to print
     std::string scenePath;                   // empty = the default scene (Cornell box)
     bool sceneGiven = false;                 // SCENE or --scene was on the command line
     std::string outPath;                     // render: PNG
-    std::string hdrPath;                     // render: .exr or .pfm
+    std::string hdrPath;                     // render, view: .exr or .pfm
     std::string timingsPath;                 // render: JSON
     render::GiMode mode = render::GiMode::Direct;
     render::OutputComponent output = render::OutputComponent::Final;
@@ -62,9 +68,11 @@ struct Config {
     int frames = 0;                          // 0 = interactive
     float animationTime = 0.0f;              // --time: seconds into the scene's animations
     glm::vec3 cameraMove{0.0f};              // --move: metres the camera travels per frame
+    int moveFrames = 0;                      // view --move-frames: frames that move; 0 = all
     float animationStep = 0.0f;              // --animate: animation seconds played per frame
     std::string screenshotPath;
     std::vector<KeyEvent> keys;
+    std::vector<DropEvent> drops;
     // bench
     bench::SweepSize sweep = bench::SweepSize::Full;   // --sweep, --quick
     std::string outDir;
@@ -89,5 +97,6 @@ struct Config {
 [[nodiscard]] bool parseCameraSpec(const std::string& text, CameraSpec& camera, std::string& error);
 [[nodiscard]] bool parseKeyEvents(const std::string& text, std::vector<KeyEvent>& keys,
         std::string& error);
+[[nodiscard]] bool parseDropEvent(const std::string& text, DropEvent& drop, std::string& error);
 
 } // namespace gi::app

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace gi::app {
@@ -52,7 +53,8 @@ void passTable(const std::vector<gl::PassTiming>& timings) {
 void memoryTable(const std::vector<gl::MemoryItem>& memory) {
     std::size_t total = 0;
     for (const gl::MemoryItem& item : memory) total += item.bytes;
-    if (!ImGui::TreeNodeEx("memory", ImGuiTreeNodeFlags_DefaultOpen, "GPU memory  %s",
+    // Closed at first: the total is in the header, the table would cover half the scene.
+    if (!ImGui::TreeNodeEx("memory", ImGuiTreeNodeFlags_None, "GPU memory  %s",
                 formatBytes(total).c_str())) {
         return;
     }
@@ -69,6 +71,24 @@ void memoryTable(const std::vector<gl::MemoryItem>& memory) {
     ImGui::TreePop();
 }
 
+// "render 640x360 (50%, moving)   budget 100 ms": what the frame budget chose.
+void resolutionLine(const UiFrame& frame) {
+    char budget[32];
+    if (frame.budgetMs > 0.0f) {
+        std::snprintf(budget, sizeof budget, "budget %.0f ms", double(frame.budgetMs));
+    } else {
+        std::snprintf(budget, sizeof budget, "budget off");
+    }
+    char size[48];
+    if (frame.reduced && frame.framebufferSize.x > 0) {
+        std::snprintf(size, sizeof size, "%ld%%, moving",
+                std::lround(100.0 * frame.renderSize.x / frame.framebufferSize.x));
+    } else {
+        std::snprintf(size, sizeof size, "full");
+    }
+    ImGui::Text("render %dx%d (%s)   %s", frame.renderSize.x, frame.renderSize.y, size, budget);
+}
+
 // Widgets for a few Settings; ranges are those Settings.cpp accepts for the same keys.
 bool settingsWidgets(Settings& settings) {
     bool changed = false;
@@ -76,6 +96,9 @@ bool settingsWidgets(Settings& settings) {
             ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("material.shininess", &settings.shininess, 1.0f, 4096.0f,
             "%.1f", ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+    // Read every frame by the viewer; no renderer setting changes with it.
+    ImGui::SliderFloat("view.frame_budget_ms", &settings.frameBudgetMs, 0.0f, 1000.0f, "%.0f",
+            ImGuiSliderFlags_AlwaysClamp);
     return changed;
 }
 
@@ -151,6 +174,7 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
                 frame.output.c_str(), frame.framebufferSize.x, frame.framebufferSize.y,
                 frame.vsync ? "on" : "off");
         ImGui::Text("exposure %s", frame.exposure.c_str());
+        resolutionLine(frame);
         if (!frame.giStatus.empty()) ImGui::TextUnformatted(frame.giStatus.c_str());
         const double fps = frame.frameMs > 0.0 ? 1000.0 / frame.frameMs : 0.0;
         char overlay[64];
@@ -172,6 +196,10 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
         if (!frame.notice.empty()) {
             ImGui::Separator();
             ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.3f, 1.0f), "%s", frame.notice.c_str());
+        }
+        if (!frame.openError.empty()) {
+            ImGui::Separator();
+            ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", frame.openError.c_str());
         }
         if (!frame.shaderErrors.empty()) {
             ImGui::Separator();

@@ -1,8 +1,9 @@
 // The viewer's overlay (Dear ImGui 1.86, Debian's GLFW + OpenGL3 backends): frame time with
 // its recent history, a table of per-pass GPU and CPU milliseconds from the GpuProfiler,
 // allocated GPU memory per resource, the current mode, output and camera, the scene's size,
-// one-line notices and shader reload errors, a few Settings widgets, and the hotkey help
-// (H). Everything ImGui lives in Ui.cpp; the viewer only hands over a UiFrame.
+// the internal render resolution against the frame budget, one-line notices, shader reload
+// errors and the error of a dropped file that did not open, a few Settings widgets, and the
+// hotkey help (H). Everything ImGui lives in Ui.cpp; the viewer only hands over a UiFrame.
 #pragma once
 
 #include "gl/GpuProfiler.h"
@@ -41,10 +42,14 @@ struct UiFrame {
     std::string camera;                            // e.g. "1/2 Camera" or "free"
     std::size_t triangles = 0;
     glm::ivec2 framebufferSize{0};                 // pixels
+    glm::ivec2 renderSize{0};                      // internal render size (frame budget)
+    float budgetMs = 0.0f;                         // view.frame_budget_ms, 0 = off
+    bool reduced = false;                          // rendered below full size: camera moving
     bool vsync = false;
     float speed = 0.0f;                            // fly speed, m/s
     std::string notice;                            // one line, empty for none
     std::string shaderErrors;                      // last failed reload, empty when fine
+    std::string openError;                         // last dropped file that failed to open
 };
 
 class Ui {

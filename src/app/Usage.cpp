@@ -4,6 +4,7 @@
 #include "core/Settings.h"
 
 #include <cstdio>
+#include <sstream>
 
 namespace gi::app {
 namespace {
@@ -47,6 +48,16 @@ std::string outputsHelp() {
         text += line;
     }
     return text;
+}
+
+// The lines of settingsHelp() for the viewer's own keys (view.*).
+std::string viewSettingsHelp() {
+    std::istringstream lines(settingsHelp());
+    std::string line, help;
+    while (std::getline(lines, line)) {
+        if (line.rfind("  view.", 0) == 0) help += line + "\n";
+    }
+    return help;
 }
 
 } // namespace
@@ -128,15 +139,23 @@ std::string usage(Command command) {
     default:
         return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"
-               "        [--keys \"FRAME:KEY,...\"] [--exposure auto|EV] [--tonemap none|filmic]\n"
-               "        [--set key=value ...]\n"
+               "        [--hdr F.exr|F.pfm] [--keys \"FRAME:KEY,...\"] [--drop FRAME:FILE ...]\n"
+               "        [--move DX,DY,DZ [--move-frames N]] [--exposure auto|EV]\n"
+               "        [--tonemap none|filmic] [--set key=value ...]\n"
                "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
                "       voxatlas bench [--scene ...] [--sweep smoke|quick|full] [--out-dir DIR]\n"
                "       voxatlas bench --suite quick|full   (the accuracy scoreboard)\n"
                "       voxatlas info SCENE [--set key=value ...]\n"
                "SCENE defaults to the Cornell box; --mode picks the GI mode the viewer starts in\n"
                "(keys 1-3 switch). Without a display, view renders a headless screenshot instead.\n"
-               "The viewer starts at --exposure auto --tonemap filmic (keys - = X T change them).\n";
+               "The viewer starts at --exposure auto --tonemap filmic (keys - = X T change them).\n"
+               "Scripted runs (--frames N): --keys presses keys, --drop opens a file as if it were\n"
+               "dropped on the window, --move moves the camera by DX,DY,DZ metres each frame\n"
+               "(for the first N frames with --move-frames), --screenshot and --hdr save the last\n"
+               "frame (tone mapped PNG; linear radiance), and a closing line gives the median\n"
+               "frame times, moving and still.\n"
+               "\n"
+               "--set keys of the viewer (render --help lists the others):\n" + viewSettingsHelp();
     }
 }
 

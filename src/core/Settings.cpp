@@ -229,6 +229,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> int& { return s.reference.seed; }),
         intSetting("reference.threads", "reference renderer: threads (0 = all cores)", 0, 1024,
                 [](Settings& s) -> int& { return s.reference.threads; }),
+        floatSetting("view.frame_budget_ms",
+                "viewer: frame time held while the camera moves by lowering the render "
+                "resolution; a still view refines to full resolution (0 = off)",
+                0.0f, 10000.0f, [](Settings& s) -> float& { return s.frameBudgetMs; }),
         hidden(boolSetting("view.screenshot_ui",
                 "view --frames N --screenshot includes the overlay",
                 [](Settings& s) -> bool& { return s.screenshotUi; })),

@@ -104,6 +104,8 @@ struct Settings {
     AtlasSettings atlas;
     ReferenceSettings reference;
     // Viewer.
+    float frameBudgetMs = 100.0f;  // view.frame_budget_ms: while the camera moves, the render
+                                   // resolution drops to keep frames near this (0 = off)
     bool screenshotUi = false;  // view.screenshot_ui (hidden): --screenshot includes the overlay
 };
 

@@ -96,6 +96,7 @@ std::unique_ptr<GlfwWindow> GlfwWindow::create(const WindowOptions& options,
     glfwSetWindowUserPointer(raw, window.get());
     glfwSetKeyCallback(raw, onKey);
     glfwSetScrollCallback(raw, onScroll);
+    glfwSetDropCallback(raw, onDrop);
     if (!loadGlFunctions(reinterpret_cast<ProcLoader>(glfwGetProcAddress), error)) return nullptr;
     if (debugContext) installDebugMessageLog();
     window->setVsync(true);
@@ -145,6 +146,12 @@ glm::dvec2 GlfwWindow::cursorPosition() const {
 
 double GlfwWindow::takeScroll() { return std::exchange(mScroll, 0.0); }
 
+std::vector<std::string> GlfwWindow::takeDroppedPaths() {
+    return std::exchange(mDroppedPaths, {});
+}
+
+void GlfwWindow::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
+
 void GlfwWindow::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
     (void)scancode;
     (void)mods;
@@ -156,6 +163,14 @@ void GlfwWindow::onScroll(GLFWwindow* window, double dx, double dy) {
     (void)dx;
     auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
     if (self) self->mScroll += dy;
+}
+
+void GlfwWindow::onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+    if (!self) return;
+    for (int i = 0; i < count; ++i) {
+        if (paths[i]) self->mDroppedPaths.emplace_back(paths[i]);
+    }
 }
 
 std::string keyName(int glfwKey) {

@@ -1,10 +1,10 @@
 // The viewer's GL context provider: a resizable GLFW window with a GL 4.5 core,
 // forward-compatible context (a KHR_debug context in debug builds or with gl.debug=1), its
 // entry points loaded through the project's glad loader with glfwGetProcAddress. Key presses
-// arrive as a queue the viewer drains once per frame; held keys, mouse buttons, the cursor and
-// the scroll wheel are polled, so the caller decides what input means. Creation failures are
-// one clean line, and a missing display is told apart from other failures so the viewer can
-// fall back to a headless screenshot.
+// and files dropped on the window arrive as queues the viewer drains once per frame; held
+// keys, mouse buttons, the cursor and the scroll wheel are polled, so the caller decides what
+// input means. Creation failures are one clean line, and a missing display is told apart from
+// other failures so the viewer can fall back to a headless screenshot.
 #pragma once
 
 #include "platform/GlContext.h"
@@ -60,6 +60,9 @@ public:
     [[nodiscard]] glm::dvec2 cursorPosition() const;
     // Vertical scroll wheel steps since the last call.
     [[nodiscard]] double takeScroll();
+    // Paths of the files dropped on the window since the last call, in order.
+    [[nodiscard]] std::vector<std::string> takeDroppedPaths();
+    void setTitle(const std::string& title);
 
     // For libraries that talk to GLFW directly (the ImGui backend).
     [[nodiscard]] GLFWwindow* handle() const { return mWindow; }
@@ -68,9 +71,11 @@ private:
     explicit GlfwWindow(GLFWwindow* window) : mWindow(window) {}
     static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void onScroll(GLFWwindow* window, double dx, double dy);
+    static void onDrop(GLFWwindow* window, int count, const char** paths);
 
     GLFWwindow* mWindow = nullptr;
     std::vector<int> mKeyPresses;
+    std::vector<std::string> mDroppedPaths;
     double mScroll = 0.0;
     bool mVsync = false;
 };

@@ -1,9 +1,9 @@
-// `voxatlas view` in a real GLFW window under Xvfb (xvfb-run): scripted frames, injected
-// hotkeys, screenshots, refusals of bad input, and the headless fallback without a display.
-// Without xvfb-run the window tests skip, unless VOXATLAS_REQUIRE_GPU=1 makes that a failure.
+// `voxatlas view` in a real GLFW window under Xvfb (xvfb-run, ViewerRun.h): scripted frames,
+// injected hotkeys, screenshots, refusals of bad input, and the headless fallback without a
+// display.
 #include "ImageCompare.h"
+#include "ViewerRun.h"
 #include "core/Colour.h"
-#include "Process.h"
 
 #include "core/ImageIO.h"
 #include "scene/Scene.h"
@@ -13,66 +13,20 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <unistd.h>
 
 namespace gi::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kCornell =
-        std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box.gltf";
-
-// Whole viewer runs on llvmpipe take about a second; the limit is for a hung X server.
-constexpr int kTimeoutSeconds = 120;
+const std::string& kCornell = kViewerCornell;
+constexpr int kTimeoutSeconds = kViewerTimeoutSeconds;
 
 int lineCount(const std::string& text) {
     return int(std::count(text.begin(), text.end(), '\n'));
 }
 
-std::string findProgram(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    std::string dirs = path ? path : "/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
-        if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
-        start = end + 1;
-    }
-    return {};
-}
-
-class ViewerTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        mXvfbRun = findProgram("xvfb-run");
-        mTimeout = findProgram("timeout");
-        if (mXvfbRun.empty() || mTimeout.empty()) {
-            const char* require = std::getenv("VOXATLAS_REQUIRE_GPU");
-            if (require && std::string(require) == "1") {
-                FAIL() << "xvfb-run and timeout are needed to test the viewer window";
-            }
-            GTEST_SKIP() << "xvfb-run not found (Debian package xvfb): viewer window not tested";
-        }
-    }
-
-    // Runs `voxatlas view ARGS` in `dir` on a private Xvfb server. `timeout` puts the run in
-    // its own process group and kills the whole group (Xvfb included) if it hangs. Each run
-    // asks for its own server number, so parallel test runs do not race for the same one.
-    ProcessResult runView(const std::string& dir, const std::vector<std::string>& args) {
-        static int run = 0;
-        const int server = 100 + int(::getpid() % 400) * 8 + (run++ % 8);
-        std::vector<std::string> command{mTimeout, "--kill-after=5",
-                std::to_string(kTimeoutSeconds - 10), mXvfbRun, "-a", "-n", std::to_string(server),
-                "-s", "-screen 0 1024x768x24",
-                "/usr/bin/env", "-C", dir, VOXATLAS_EXECUTABLE, "view"};
-        command.insert(command.end(), args.begin(), args.end());
-        return runProcess(command, kTimeoutSeconds);
-    }
-
-    std::string mXvfbRun, mTimeout;
-};
+class ViewerTest : public ViewerWindowTest {};
 
 // Mean of the sRGB-encoded channels, 0..1; a lit Cornell box is far from black.
 float meanEncoded(const core::Image& image) {

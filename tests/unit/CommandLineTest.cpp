@@ -125,6 +125,20 @@ TEST(CommandLine, ParsesViewScripting) {
     EXPECT_EQ(config->keys[1].key, "F12");
 }
 
+TEST(CommandLine, ParsesViewMotionAndDrops) {
+    std::string error;
+    const auto config = parse({"view", "--move", "0.5,0,0", "--move-frames", "20", "--drop",
+            "3:a:b.gltf", "--drop", "7:c.glb", "--hdr", "v.pfm"}, error);
+    ASSERT_TRUE(config) << error;
+    EXPECT_EQ(config->cameraMove, glm::vec3(0.5f, 0.0f, 0.0f));
+    EXPECT_EQ(config->moveFrames, 20);
+    ASSERT_EQ(config->drops.size(), 2u);
+    EXPECT_EQ(config->drops[0].frame, 3);
+    EXPECT_EQ(config->drops[0].path, "a:b.gltf");
+    EXPECT_EQ(config->drops[1].path, "c.glb");
+    EXPECT_EQ(config->hdrPath, "v.pfm");
+}
+
 TEST(CommandLine, ViewStartsInTheModeAsked) {
     std::string error;
     const auto config = parse({"view", "--mode", "voxel"}, error);
@@ -190,6 +204,10 @@ INSTANTIATE_TEST_SUITE_P(BadInput, CommandLineRejects, ::testing::Values(
         Rejection{{"render", "a.gltf", "b.gltf", "--out", "a.png"}, "only one scene"},
         Rejection{{"view", "--frames", "0"}, "--frames"},
         Rejection{{"view", "--keys", "x:G"}, "--keys"},
+        Rejection{{"view", "--keys", "1:G,"}, "--keys"},
+        Rejection{{"view", "--drop", "scene.gltf"}, "FRAME:FILE"},
+        Rejection{{"view", "--drop", "-1:scene.gltf"}, "FRAME:FILE"},
+        Rejection{{"view", "--move-frames", "0"}, "--move-frames"},
         Rejection{{"view", "--out", "a.png"}, "not an option"},
         Rejection{{"view", "--mode", "reference"}, "real-time modes"},
         Rejection{{"bench", "--sweep", "huge"}, "smoke, quick or full"},
