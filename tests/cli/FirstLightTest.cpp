@@ -86,6 +86,25 @@ TEST(FirstLightInfo, SaysWhatWasChosenAndWhy) {
             std::string::npos) << box.out;
 }
 
+// A box lit only by an emissive ceiling panel: the panel is its light (no invented one) and
+// lights the room.
+TEST(FirstLightEmissive, PanelIsTheOnlyLightAndLightsTheBox) {
+    const std::string scene = std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box_emissive.gltf";
+    const ProcessResult info = runVoxatlas({"info", scene});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("lights     1\n"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("chosen: emissive surfaces: 2 emissive triangle(s)"), std::string::npos)
+            << info.out;
+    EXPECT_NE(info.out.find("[0] area"), std::string::npos) << info.out;
+    EXPECT_EQ(info.out.find("(default) colour"), std::string::npos) << info.out;
+    const core::Image image = renderDefault(scene, "cornell_box_emissive");
+    ASSERT_FALSE(image.empty());
+    const PictureStats s = stats(image);
+    EXPECT_GE(s.meanLuminance, 0.04f);
+    EXPECT_LE(s.meanLuminance, 0.8f);
+    EXPECT_GE(s.litFraction, 0.25f);
+}
+
 TEST(FirstLightSponza, DefaultCameraStandsInsideAndSeesALitAtrium) {
     VOXATLAS_SPONZA_OR_SKIP(sponza);
     const ProcessResult info = runVoxatlas({"info", sponza});

@@ -14,7 +14,7 @@ namespace {
 
 // Directions each receiver casts towards the sky per sample set (gather.frag skyIrradiance):
 // sets accumulate, so a still view converges whatever this is; more only costs time.
-constexpr int kSkyDirectionsPerSet = 4;
+constexpr int kSkyDirectionsPerSet = 16;
 
 bool sameLights(const std::vector<scene::Light>& a, const std::vector<scene::Light>& b) {
     if (a.size() != b.size()) return false;
