@@ -181,6 +181,7 @@
 // shadow.method: how the direct light the camera sees is shadowed.
 #define SHADOW_METHOD_SHADOWMAP     0   // shadow maps (area lights: from their centre)
 #define SHADOW_METHOD_BVH           1   // rays through the scene's BVH (GpuBvh)
+#define SHADOW_METHOD_COUNT         2
 
 #define SHADOW_NONE                 0
 #define SHADOW_2D                   1

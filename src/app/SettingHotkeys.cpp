@@ -1,5 +1,7 @@
 #include "app/SettingHotkeys.h"
 
+#include "gl/Shared.h"
+
 #include <algorithm>
 
 namespace gi::app {
@@ -57,6 +59,14 @@ const std::vector<SettingHotkey>& settingHotkeys() {
                 [](Settings& s, float) {
                     s.voxel.injectFragmentMean = !s.voxel.injectFragmentMean;
                 }},
+        {"K", "shadows of direct light: shadow maps / BVH rays", "shadow.method",
+                [](Settings& s, float) {
+                    s.shadow.method = (s.shadow.method + 1) % SHADOW_METHOD_COUNT;
+                }},
+        {"J", "shadow rays per area light / 2", "shadow.rays",
+                [](Settings& s, float) { s.shadow.rays = std::max(1, s.shadow.rays / 2); }},
+        {"U", "shadow rays per area light x 2", "shadow.rays",
+                [](Settings& s, float) { s.shadow.rays = std::min(1024, s.shadow.rays * 2); }},
     };
     return hotkeys;
 }
