@@ -97,6 +97,21 @@ def main():
     lines += ["", f"For scale: the sky's direct light alone against the path tracer's final "
               f"image with one bounce of it: relative RMSE {rmse:.3f}, energy {energy:.3f} "
               "(the bounce no GPU mode adds yet).", ""]
+    lines += ["## Reading the figures", "",
+              "- The emissive box's direct light is exact before shadowing in every mode "
+              "(tests/gpu/AreaLightGpuTest.cpp holds it to the form factor within 0.5%); what "
+              "remains is shadowing and pixel footprint: these images sample each pixel at "
+              "its centre while the path tracer averages its square "
+              "(`docs/results-shadows.md` compares them at render.supersample=4).",
+              "- Without GI (`--mode direct`) nothing tells where the sky is visible: every "
+              "surface gets the open-hemisphere term, so the box's inside is lit as if it "
+              "had no walls (energy above 2).",
+              "- Voxel GI over-counts the sky: a cone that crosses a wall of partial coverage "
+              "keeps (1 - opacity) of the sky behind it, and the sky's radiance is about ten "
+              "times the walls', so these leaks weigh far more than they do for bounce light "
+              "(the thin-wall leak of `docs/results-accuracy.md` is the same effect).",
+              "- Atlas GI with voxel visibility blocks sky directions by the occupancy "
+              "volume's coverage and comes within 10% of the energy.", ""]
     common.write_page("results-area-sky.md", lines)
     print("\n".join(lines))
 
