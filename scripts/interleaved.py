@@ -21,14 +21,17 @@ def load_average():
 
 
 def voxatlas_frame(settings, frames, warmup, size=(WIDTH, HEIGHT), shader_dir=None,
-                   camera=INSIDE_CAMERA):
+                   camera=INSIDE_CAMERA, binary=None):
     """Median ms per pass of the Cornell box in voxel mode ('frame' = the passes' sum);
-    settings start from the program's defaults (the adaptive plan), not the thesis plan."""
+    settings start from the program's defaults (the adaptive plan), not the thesis plan;
+    `binary` replaces the voxatlas that runs from here on."""
     env = dict(os.environ)
     if shader_dir:
         env["VOXATLAS_SHADER_DIR"] = shader_dir
     extra = ["--camera", camera, "--set", "render.plan=adaptive"]
     extra += common.settings_args(settings)
+    if binary:
+        common.BIN = binary
     report = common.render_timed(common.CORNELL, {}, frames, warmup, size, extra, mode="voxel",
                                  env=env).report
     return common.pass_medians(report)
