@@ -61,6 +61,9 @@ layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
 layout(binding = BIND_TEX_VOXEL_DIRECTIONAL) uniform sampler3D voxelDirectionalTexture;
 
+// Tested against the depth pre-pass before shading: hidden surfaces trace no cones.
+layout(early_fragment_tests) in;
+
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
