@@ -61,6 +61,9 @@ layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
 layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
 layout(binding = BIND_TEX_VOXEL_DIRECTIONAL) uniform sampler3D voxelDirectionalTexture;
 
+// Tested against the depth pre-pass before shading: hidden surfaces trace no cones.
+layout(early_fragment_tests) in;
+
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
@@ -70,6 +73,10 @@ const int kMaxSteps = 1024;
 // The axis meets a flat voxel's plane up to this many voxel sizes, measured along the axis,
 // before or after its path through the voxel.
 const float kAxisCrossingSlack = 0.01;
+// The coarsest-level walk crosses empty space a block of kEmptyBlock^3 voxels at a time: a
+// texel of the radiance pyramid's mip kEmptyBlockMip (isotropic voxels only).
+const int kEmptyBlockMip = 1;
+const int kEmptyBlock = 2 << kEmptyBlockMip;
 // Anisotropic voxels whose faces towards a cone are covered less than this hold nothing that
 // faces it.
 const float kNothingFaces = 1e-3;
@@ -171,6 +178,21 @@ vec3 coarsestLight(vec3 p, float diameter, vec3 dir) {
     return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
 }
 
+// Distance along dir, in voxels, from `local` (coarsest-level voxel units) out of its cell of
+// a grid of `cellSize` voxels; at least a thousandth of a voxel, so the walk always moves.
+float cellExit(vec3 local, vec3 dir, float cellSize) {
+    vec3 cell = floor(local / cellSize) * cellSize;
+    vec3 toExit = mix(local - cell, cell + cellSize - local, greaterThan(dir, vec3(0.0)));
+    vec3 exitAt = toExit / max(abs(dir), vec3(1e-6));
+    return max(min(exitAt.x, min(exitAt.y, exitAt.z)), 1e-3);
+}
+
+// Whether the kEmptyBlock^3 coarsest voxels around `local` are all empty: the pyramid texel
+// over them averages their coverage, so it is zero only when every one is.
+bool emptyBlock(vec3 local) {
+    return texelFetch(voxelPyramidTexture, ivec3(local) / kEmptyBlock, kEmptyBlockMip).a <= 0.0;
+}
+
 vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
     float tanHalf = voxel.trace.x;
     float finest = levelVoxelSize(0);
@@ -209,15 +231,18 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
                     break;
                 }
                 // A finer level takes over again where the cone is still narrow enough (the
-                // test the level choice above makes).
-                if (coarsest > 0 && log2(diameter / finest) < float(coarsest) &&
-                        insideLevel(p, coarsest - 1)) {
-                    break;
+                // test the level choice above makes); empty blocks are skipped only where none
+                // can (the cone only widens).
+                bool narrow = coarsest > 0 && log2(diameter / finest) < float(coarsest);
+                if (narrow && insideLevel(p, coarsest - 1)) break;
+                bool skipEmpty = !narrow && !anisotropicVoxels();
+                if (skipEmpty && emptyBlock(local)) {
+                    dist += (cellExit(local, dir, float(kEmptyBlock)) + 1e-3) * coarsestSize;
+                    diameter = max(2.0 * tanHalf * dist, finest);
+                    continue;
                 }
                 vec3 cell = floor(local);
-                vec3 toExit = mix(local - cell, cell + 1.0 - local, greaterThan(dir, vec3(0.0)));
-                vec3 exitAt = toExit / max(abs(dir), vec3(1e-6));
-                path = max(min(exitAt.x, min(exitAt.y, exitAt.z)), 1e-3) * coarsestSize;
+                path = cellExit(local, dir, 1.0) * coarsestSize;
                 entry = dist;
                 dist += path + 1e-3 * coarsestSize;
                 diameter = max(2.0 * tanHalf * dist, finest);

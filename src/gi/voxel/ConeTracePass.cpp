@@ -8,7 +8,12 @@ bool ConeTracePass::init(gl::ShaderLibrary& shaders, std::string& error) {
     mProgram = shaders.build({"voxel/cone_trace",
             {{GL_VERTEX_SHADER, "voxel/cone_trace.vert"}, {GL_FRAGMENT_SHADER, "voxel/cone_trace.frag"}},
             {}}, error);
-    return bool(mProgram);
+    if (!mProgram) return false;
+    mDepthProgram = shaders.build({"voxel/cone_trace_depth",
+            {{GL_VERTEX_SHADER, "voxel/cone_trace.vert"},
+             {GL_FRAGMENT_SHADER, "common/depth_only.frag"}},
+            {}}, error);
+    return bool(mDepthProgram);
 }
 
 void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
@@ -20,10 +25,18 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
+    // Depth first, so that only the visible surface of each pixel traces its cones: without
+    // it every surface drawn before the one in front traced 9 cones for nothing.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(mDepthProgram.id());
+    in.scene.drawAll(mDepthProgram.id(), true);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glUseProgram(mProgram.id());
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.textures.albedo.id());
     glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.textures.normal.id());
@@ -32,6 +45,8 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
         glBindTextureUnit(BIND_TEX_VOXEL_DIRECTIONAL, in.textures.directional.id());
     }
     in.scene.drawAll(mProgram.id(), true);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,6 +1,7 @@
 // Cone tracing into its own framebuffer at voxel.trace_scale of the output per axis (thesis
 // 4.2.5, 4.3.3.4): the scene is rasterised at that resolution and each fragment traces 9
-// cones through the cascade, writing indirect irradiance E_ind (W/m^2).
+// cones through the cascade, writing indirect irradiance E_ind (W/m^2). A depth pre-pass
+// leaves the tracing to the visible surface of each pixel.
 // Inputs : GpuScene, frame UBO (camera), VoxelUniforms, VoxelTextures (sampled, filtered).
 // Outputs: indirect(), RGBA16F at Outputs::size: rgb = E_ind, a = view depth (m); cleared to
 //          0 where no surface.
@@ -37,6 +38,7 @@ public:
 
 private:
     gl::ProgramRef mProgram;
+    gl::ProgramRef mDepthProgram;      // the depth pre-pass
     gl::RenderTarget mTarget{"voxel/trace", {GL_RGBA16F, "voxel/indirect", true},
             {GL_DEPTH_COMPONENT32F, "voxel/trace_depth"}};
     glm::ivec2 mSize{0};
