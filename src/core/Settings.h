@@ -14,8 +14,12 @@ struct ShadowSettings {
     int resolution = 1024;        // shadow.resolution: texels per side of every map and cube face
     float normalOffset = 1.5f;    // shadow.normal_offset: texels of footprint along the normal
     float pcfRadius = 1.0f;       // shadow.pcf_radius: texels between PCF taps
-    int method = 0;               // shadow.method: SHADOW_METHOD_* (0 shadowmap, 1 bvh)
-    int rays = 25;                // shadow.rays: shadow rays per pixel and area light (bvh)
+    int method = 0;               // shadow.method: SHADOW_METHOD_* (0 shadowmap, 1 bvh,
+                                  // 2 linespace)
+    int rays = 25;                // shadow.rays: shadow rays per pixel and area light (bvh,
+                                  // linespace)
+    int lineSpaceN = 6;           // linespace.n: children per axis of every N-tree node
+    int lineSpaceDepth = 3;       // linespace.depth: levels below the root, the last the leaves
     bool operator==(const ShadowSettings&) const = default;
 };
 
