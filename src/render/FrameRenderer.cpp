@@ -36,7 +36,7 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     mSettings = applyPlan(settings, mPlan);
     mLights = plannedLights(mAllLights, mPlan);
     if (!shadowMapsFit(mLights, mSettings.shadow, error) ||
-            !lineSpaceFits(scene, mLights, mSettings.shadow, error)) {
+            !lineSpaceFits(scene, mLights, mSettings, error)) {
         return false;
     }
     mScene = std::make_unique<scene::GpuScene>(scene);
@@ -55,8 +55,9 @@ bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
     std::vector<scene::Light> lights = plannedLights(mAllLights, plan);
     const bool lightsChanged = lights != mLights;
     const bool shadowsChanged = !(settings.shadow == mSettings.shadow) || lightsChanged;
-    if (shadowsChanged && (!shadowMapsFit(lights, settings.shadow, error) ||
-                                   !lineSpaceFits(*mSceneDescription, lights, settings.shadow, error))) {
+    const bool lineSpaceChanged = shadowsChanged || !(settings.lineSpace == mSettings.lineSpace);
+    if ((shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) ||
+            (lineSpaceChanged && !lineSpaceFits(*mSceneDescription, lights, settings, error))) {
         return false;
     }
     if (mGi && !mGi->configure(settings, error)) return false;
@@ -147,7 +148,7 @@ void FrameRenderer::updateShadowRays(const scene::Scene& scene) {
         std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
     }
     if (mSettings.shadow.method == SHADOW_METHOD_LINESPACE &&
-            !mLineSpace.update(*mShaders, scene, mLights, mScene->geometryVersion(), mSettings.shadow, error)) {
+            !mLineSpace.update(*mShaders, scene, mLights, mScene->geometryVersion(), mSettings.lineSpace, error)) {
         std::fprintf(stderr, "shadow.method=linespace: %s\n", error.c_str());
     }
 }

@@ -89,12 +89,13 @@ double lineSpaceBytesBound(const LineSpaceLayout& layout, const std::vector<glm:
 }
 
 bool lineSpaceFits(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-        const ShadowSettings& settings, std::string& error) {
-    if (settings.method != SHADOW_METHOD_LINESPACE || !settings.enabled) return true;
-    const LineSpaceLayout layout = lineSpaceLayout(scene.bounds, settings.lineSpaceN, settings.lineSpaceDepth);
+        const Settings& settings, std::string& error) {
+    if (settings.shadow.method != SHADOW_METHOD_LINESPACE || !settings.shadow.enabled) return true;
+    const int n = settings.lineSpace.n, depth = settings.lineSpace.depth;
+    const LineSpaceLayout layout = lineSpaceLayout(scene.bounds, n, depth);
     const double bytes = lineSpaceBytesBound(layout, shadowCasterCorners(scene, lights));
-    return gl::fitsResourceBudget("the line space at linespace.n " + std::to_string(settings.lineSpaceN) +
-                    ", linespace.depth " + std::to_string(settings.lineSpaceDepth),
+    return gl::fitsResourceBudget("the line space at linespace.n " + std::to_string(n) +
+                    ", linespace.depth " + std::to_string(depth),
             bytes, error);
 }
 

@@ -46,19 +46,19 @@ bool LineSpaceShadows::buildPrograms(gl::ShaderLibrary& shaders, std::string& er
 
 bool LineSpaceShadows::update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
         const std::vector<scene::Light>& lights, std::uint64_t geometryVersion,
-        const ShadowSettings& settings, std::string& error) {
+        const LineSpaceSettings& settings, std::string& error) {
     std::vector<scene::EmitterTriangle> emitters = allEmitters(lights);
     if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters &&
-            mStats.n == settings.lineSpaceN && mStats.depth == settings.lineSpaceDepth) {
+            mStats.n == settings.n && mStats.depth == settings.depth) {
         return true;
     }
     mBuilt = true;
     mGeometryVersion = geometryVersion;
     mEmitters = std::move(emitters);
-    mStats.n = settings.lineSpaceN;
-    mStats.depth = settings.lineSpaceDepth;
+    mStats.n = settings.n;
+    mStats.depth = settings.depth;
     if (!mShafts && !buildPrograms(shaders, error)) return false;
-    if (build(scene, lights, settings.lineSpaceN, settings.lineSpaceDepth, error)) return true;
+    if (build(scene, lights, settings.n, settings.depth, error)) return true;
     mNodes = {};
     mBits = {};
     return false;

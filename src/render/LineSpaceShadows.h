@@ -38,7 +38,7 @@ public:
     // nothing is occluded then, and it is not tried again for the same inputs.
     bool update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
             const std::vector<scene::Light>& lights, std::uint64_t geometryVersion,
-            const ShadowSettings& settings, std::string& error);
+            const LineSpaceSettings& settings, std::string& error);
     // Binds the node and line-space pools (an empty tree before the first build).
     void bind();
     const LineSpaceStats& stats() const { return mStats; }

@@ -51,8 +51,8 @@ Rendered renderWith(const scene::Scene& scene, int method, int rays, int size) {
     settings.specular = 0.0f;
     settings.shadow.method = method;
     settings.shadow.rays = rays;
-    settings.shadow.lineSpaceN = 4;
-    settings.shadow.lineSpaceDepth = 3;
+    settings.lineSpace.n = 4;
+    settings.lineSpace.depth = 3;
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
     std::string error;
