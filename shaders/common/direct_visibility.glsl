@@ -11,18 +11,42 @@
 //                          shadowed points are noise-free and only penumbrae carry noise
 //                          (the ratio estimator of Heitz et al. 2018, "Combining analytic
 //                          direct illumination and stochastic shadows").
+// SHADOW_METHOD_LINESPACE  the same rays through the N-tree's line spaces (linespace.glsl),
+//                          which keep two leaf voxels off the surfaces at both ends.
 #ifndef GI_DIRECT_VISIBILITY_GLSL
 #define GI_DIRECT_VISIBILITY_GLSL
 
 #include "bvh.glsl"
 #include "frame.glsl"
 #include "hash.glsl"
+#include "linespace.glsl"
 #include "shadows.glsl"
 
 float emitterSamplingWeight(GpuEmitter e) {
     vec3 l = e.radiance.rgb;
     float luminance = 0.2126 * l.r + 0.7152 * l.g + 0.0722 * l.b;
     return luminance * length(cross(e.p1.xyz - e.p0.xyz, e.p2.xyz - e.p0.xyz));
+}
+
+bool shadowRayOccluded(vec3 origin, vec3 dir, float tMax) {
+    if (int(frame.shadowing.x) == SHADOW_METHOD_LINESPACE) return lineSpaceOccluded(origin, dir, tMax);
+    return bvhOccluded(origin, dir, tMax);
+}
+
+// How far off a surface shadow rays start (m).
+float shadowRayOffset() {
+    float offset = frame.shadowing.z;
+    if (int(frame.shadowing.x) != SHADOW_METHOD_LINESPACE) return offset;
+    return max(offset, lineSpaceSurfaceClearance());
+}
+
+// Where a ray of length r to a point on an emitter stops: just short of it, and for the line
+// space the clearance off the emitter's plane (cosY the cosine at the emitter); 0 = nothing
+// left to test.
+float shadowRayEnd(float r, float cosY) {
+    float end = r * (1.0 - 1e-4);
+    if (int(frame.shadowing.x) != SHADOW_METHOD_LINESPACE) return end;
+    return max(end - lineSpaceSurfaceClearance() / max(cosY, 0.2), 0.0);
 }
 
 float areaLightRayVisibility(GpuLight light, vec3 origin, vec3 n, inout uint state) {
@@ -61,7 +85,8 @@ float areaLightRayVisibility(GpuLight light, vec3 origin, vec3 n, inout uint sta
         if (cosX <= 0.0 || cosY <= 0.0) continue;
         float f = cosX * cosY / r2;
         sent += f;
-        if (!bvhOccluded(origin, w, r * (1.0 - 1e-4))) arrived += f;
+        float end = shadowRayEnd(r, cosY);
+        if (end <= 0.0 || !shadowRayOccluded(origin, w, end)) arrived += f;
     }
     return sent > 0.0 ? arrived / sent : 1.0;
 }
@@ -70,19 +95,19 @@ float areaLightRayVisibility(GpuLight light, vec3 origin, vec3 n, inout uint sta
 float directVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLight,
         inout uint state) {
     if (frame.shading.w == 0.0) return 1.0;
-    if (int(frame.shadowing.x) != SHADOW_METHOD_BVH) {
+    if (int(frame.shadowing.x) == SHADOW_METHOD_SHADOWMAP) {
         return shadowVisibility(lightIndex, position, n, distanceToLight);
     }
     GpuLight light = lights[lightIndex];
     int type = int(light.positionAndType.w);
-    vec3 origin = position + n * frame.shadowing.z;
+    vec3 origin = position + n * shadowRayOffset();
     if (type == LIGHT_AREA) return areaLightRayVisibility(light, origin, n, state);
     if (type == LIGHT_SKY) return 1.0;
     vec3 toLight;
     float distance;
     lightDirection(light, origin, toLight, distance);
     float tMax = type == LIGHT_DIRECTIONAL ? 1e30 : distance * (1.0 - 1e-4);
-    return bvhOccluded(origin, toLight, tMax) ? 0.0 : 1.0;
+    return shadowRayOccluded(origin, toLight, tMax) ? 0.0 : 1.0;
 }
 
 #endif

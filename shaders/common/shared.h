@@ -29,6 +29,15 @@
 #define BIND_SSBO_EMITTERS          9   // GpuEmitter[], the triangles of every area light
 #define BIND_SSBO_BVH_NODES         10  // vec4[2 per node]: the scene's BVH (reference/GpuBvh.h)
 #define BIND_SSBO_BVH_TRIANGLES     11  // vec4[3 per triangle]: its triangles' corners
+#define BIND_SSBO_LINESPACE_NODES   12  // GpuLineSpaceHeader, then uint per child of every node
+                                        // above the deepest inner level: the child's node index
+                                        // or LINESPACE_EMPTY (render/LineSpaceShadows.h)
+#define BIND_SSBO_LINESPACE_BITS    13  // uint[]: every node's line space, one bit per shaft
+#define BIND_SSBO_LINESPACE_OCCUPANCY 14 // uint[] bits, build only: per N-tree level l = 0..d,
+                                        // (N^l)^3 cells, x fastest; level d = the leaf voxels
+#define BIND_SSBO_LINESPACE_INPUT   15  // build only: vec4[3 per triangle] world corners
+                                        // (voxelization), or uvec4 (level, cell.xyz) per node
+                                        // (line-space bits)
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -155,6 +164,9 @@
 #define LOC_INJECT_LIGHT            10  // int, index into GpuLight[] of the injected light
 #define LOC_PRESENT_EXPOSURE        11  // float, display exposure: 2^EV or the auto exposure
 #define LOC_PRESENT_CURVE           12  // int, TONE_CURVE_NONE or TONE_CURVE_FILMIC
+#define LOC_LINESPACE_LEVEL         13  // int, N-tree level an occupancy reduction writes
+#define LOC_LINESPACE_COUNT         14  // uint, triangles (voxelization) or nodes (line spaces)
+#define LOC_LINESPACE_FIRST         15  // uint, first node of this line-space dispatch
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]
@@ -181,7 +193,11 @@
 // shadow.method: how the direct light the camera sees is shadowed.
 #define SHADOW_METHOD_SHADOWMAP     0   // shadow maps (area lights: from their centre)
 #define SHADOW_METHOD_BVH           1   // rays through the scene's BVH (GpuBvh)
-#define SHADOW_METHOD_COUNT         2
+#define SHADOW_METHOD_LINESPACE     2   // rays through an N-tree's line spaces (linespace.glsl)
+#define SHADOW_METHOD_COUNT         3
+
+#define LINESPACE_EMPTY             0xFFFFFFFFu // a child without geometry
+#define LINESPACE_LOCAL_SIZE        64  // invocations per group of the build's compute passes
 
 #define SHADOW_NONE                 0
 #define SHADOW_2D                   1
@@ -235,6 +251,12 @@ struct GpuEmitter {                     // std430, one triangle of an area light
     vec4 p2;
     vec4 radiance;                      // rgb = emitted radiance (W/(m^2 sr)), w = 1 if it
                                         // emits from both sides
+};
+
+struct GpuLineSpaceHeader {             // std430, the start of BIND_SSBO_LINESPACE_NODES
+    vec4 root;                          // xyz = the root cube's lowest corner (m), w = its edge
+    ivec4 shape;                        // x = N, y = depth d, z = uints per line space,
+                                        // w = nodes (0: no geometry, nothing is occluded)
 };
 
 struct GpuMaterial {                    // std430

@@ -147,7 +147,8 @@ int runRender(const Config& config) {
     scene::CameraView camera;
     if (!selectCamera(config, scene, float(width) / float(height), camera, error)) return fail(2, error);
     if (config.mode == render::GiMode::Reference) return runReference(config, scene, camera, width, height);
-    if (!render::FrameRenderer::shadowMapsFit(scene.lights, config.settings.shadow, error)) {
+    if (!render::FrameRenderer::shadowMapsFit(scene.lights, config.settings.shadow, error) ||
+            !render::lineSpaceFits(scene, scene.lights, config.settings, error)) {
         return fail(2, error);
     }
 

@@ -14,9 +14,18 @@ struct ShadowSettings {
     int resolution = 1024;        // shadow.resolution: texels per side of every map and cube face
     float normalOffset = 1.5f;    // shadow.normal_offset: texels of footprint along the normal
     float pcfRadius = 1.0f;       // shadow.pcf_radius: texels between PCF taps
-    int method = 0;               // shadow.method: SHADOW_METHOD_* (0 shadowmap, 1 bvh)
-    int rays = 25;                // shadow.rays: shadow rays per pixel and area light (bvh)
+    int method = 0;               // shadow.method: SHADOW_METHOD_* (0 shadowmap, 1 bvh,
+                                  // 2 linespace)
+    int rays = 25;                // shadow.rays: shadow rays per pixel and area light (bvh,
+                                  // linespace)
     bool operator==(const ShadowSettings&) const = default;
+};
+
+// The N-tree of shadow.method=linespace (SEEDS.md section 3).
+struct LineSpaceSettings {
+    int n = 6;                    // linespace.n: children per axis of every N-tree node
+    int depth = 3;                // linespace.depth: levels below the root, the last the leaves
+    bool operator==(const LineSpaceSettings&) const = default;
 };
 
 // Voxel cone tracing (SEEDS.md section 1); defaults are the thesis' reference settings.
@@ -100,6 +109,7 @@ struct Settings {
     float specular = 0.04f;     // material.specular: ks, 0 switches the specular term off
     float shininess = 64.0f;    // material.shininess: Blinn-Phong exponent n
     ShadowSettings shadow;
+    LineSpaceSettings lineSpace;
     VoxelSettings voxel;
     AtlasSettings atlas;
     ReferenceSettings reference;

@@ -1,9 +1,7 @@
 #include "render/BvhShadows.h"
 
 #include "gl/Shared.h"
-
-#include <set>
-#include <utility>
+#include "render/ShadowCasters.h"
 
 namespace gi::render {
 
@@ -14,8 +12,7 @@ bool BvhShadows::update(const scene::Scene& scene, const std::vector<scene::Ligh
         emitters.insert(emitters.end(), light.emitters.begin(), light.emitters.end());
     }
     if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters) return true;
-    std::set<std::pair<int, int>> lightTriangles;
-    for (const scene::EmitterTriangle& t : emitters) lightTriangles.insert({t.instance, t.triangle});
+    const std::set<std::pair<int, int>> lightTriangles = emitterTriangles(lights);
     reference::GpuBvh bvh;
     const bool ok = reference::buildGpuBvh(scene,
             [&](std::size_t instance, std::size_t triangle) {

@@ -35,7 +35,10 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     mPlan = planFor(settings);
     mSettings = applyPlan(settings, mPlan);
     mLights = plannedLights(mAllLights, mPlan);
-    if (!shadowMapsFit(mLights, mSettings.shadow, error)) return false;
+    if (!shadowMapsFit(mLights, mSettings.shadow, error) ||
+            !lineSpaceFits(scene, mLights, mSettings, error)) {
+        return false;
+    }
     mScene = std::make_unique<scene::GpuScene>(scene);
     if (mLights != scene.lights) mScene->setLights(mLights);
     mFrameUniforms = gl::createBuffer(sizeof(shader::FrameUniforms), nullptr,
@@ -52,7 +55,11 @@ bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
     std::vector<scene::Light> lights = plannedLights(mAllLights, plan);
     const bool lightsChanged = lights != mLights;
     const bool shadowsChanged = !(settings.shadow == mSettings.shadow) || lightsChanged;
-    if (shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) return false;
+    const bool lineSpaceChanged = shadowsChanged || !(settings.lineSpace == mSettings.lineSpace);
+    if ((shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) ||
+            (lineSpaceChanged && !lineSpaceFits(*mSceneDescription, lights, settings, error))) {
+        return false;
+    }
     if (mGi && !mGi->configure(settings, error)) return false;
     mRequested = requested;
     mPlan = std::move(plan);
@@ -126,15 +133,23 @@ void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
 void FrameRenderer::setPose(const scene::Scene& scene) {
     const gl::MemoryScope memoryScope(mMemory);
     mScene->updateDynamic(scene);
-    if (mSettings.shadow.method == SHADOW_METHOD_BVH && mSettings.shadow.enabled) {
-        std::string error;
-        if (!mBvhShadows.update(scene, mLights, mScene->geometryVersion(), error)) {
-            std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
-        }
-    }
+    updateShadowRays(scene);
     if (mScene->geometryVersion() != mShadowGeometry) {
         mShadowGeometry = mScene->geometryVersion();
         mShadows.invalidate();
+    }
+}
+
+void FrameRenderer::updateShadowRays(const scene::Scene& scene) {
+    if (!mSettings.shadow.enabled) return;
+    std::string error;
+    if (mSettings.shadow.method == SHADOW_METHOD_BVH &&
+            !mBvhShadows.update(scene, mLights, mScene->geometryVersion(), error)) {
+        std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
+    }
+    if (mSettings.shadow.method == SHADOW_METHOD_LINESPACE &&
+            !mLineSpace.update(*mShaders, scene, mLights, mScene->geometryVersion(), mSettings.lineSpace, error)) {
+        std::fprintf(stderr, "shadow.method=linespace: %s\n", error.c_str());
     }
 }
 
@@ -188,13 +203,9 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
                 GL_TEXTURE_2D, 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
         return;
     }
-    if (mSettings.shadow.method == SHADOW_METHOD_BVH && mSettings.shadow.enabled) {
-        std::string error;
-        if (!mBvhShadows.update(*mSceneDescription, mLights, mScene->geometryVersion(), error)) {
-            std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
-        }
-    }
+    updateShadowRays(*mSceneDescription);
     mBvhShadows.bind();
+    mLineSpace.bind();
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
                              mSettings.depthPrepass},
             {mTarget}, profiler);

@@ -9,6 +9,7 @@
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "render/BvhShadows.h"
+#include "render/LineSpaceShadows.h"
 #include "render/ForwardPass.h"
 #include "render/OutputCatalog.h"
 #include "render/ResourcePlan.h"
@@ -75,6 +76,8 @@ public:
     // The textures and buffers this renderer holds now, a row per label (gl/MemoryRegistry.h);
     // the atlas' voxel occupancy under "atlas/occupancy/".
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
+    // The last line-space build (shadow.method=linespace); zero before one.
+    const LineSpaceStats& lineSpaceStats() const { return mLineSpace.stats(); }
     // The active GI technique, or nullptr in direct mode.
     const GiTechnique* technique() const { return mGi.get(); }
 
@@ -83,6 +86,8 @@ private:
     std::vector<float> readTarget() const;
     // The camera's FrameUniforms for this frame: the only write of the buffer per frame.
     void writeFrameUniforms(const scene::CameraView& camera, OutputComponent output);
+    // Builds or refreshes the BVH or line space the shadow method traces, if it traces one.
+    void updateShadowRays(const scene::Scene& scene);
     std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);
 
     // The plan for `requested`, this scene and mAllLights; mSettings is applyPlan of it and
@@ -105,6 +110,7 @@ private:
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;
     BvhShadows mBvhShadows;             // shadow.method=bvh
+    LineSpaceShadows mLineSpace;        // shadow.method=linespace
     std::uint64_t mShadowGeometry = 0;   // GpuScene::geometryVersion() the maps were drawn for
     GiMode mMode = GiMode::Direct;
     std::unique_ptr<GiTechnique> mGi;

@@ -119,6 +119,18 @@ TEST(RenderCommand, RejectsBadSetting) {
             "no.such.key", {dir + "/a.png"});
 }
 
+TEST(RenderCommand, RejectsLineSpaceOverBudgetOrOutOfRange) {
+    const std::string dir = makeTempDir("render-linespace");
+    // N = 10 at depth 4: 10^4 leaf voxels per axis, 10^12 bits before any line space.
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--set",
+                               "shadow.method=linespace", "--set", "linespace.n=10", "--set",
+                               "linespace.depth=4"}),
+            "linespace.n 10", {dir + "/a.png"});
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--set",
+                               "linespace.n=3"}),
+            "linespace.n", {dir + "/a.png"});
+}
+
 TEST(RenderCommand, RejectsMissingScene) {
     const std::string dir = makeTempDir("render-missing");
     expectCleanRefusal(runVoxatlas({"render", dir + "/nothere.gltf", "--out", dir + "/a.png"}),

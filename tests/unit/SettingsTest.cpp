@@ -42,6 +42,7 @@ bool sectionEquals(const std::string& section, const Settings& a, const Settings
     if (section == "voxel") return a.voxel == b.voxel;
     if (section == "atlas") return a.atlas == b.atlas;
     if (section == "reference") return a.reference == b.reference;
+    if (section == "linespace") return a.lineSpace == b.lineSpace;
     return true;
 }
 
@@ -62,7 +63,7 @@ TEST(Settings, EachKeyChangesOnlyItself) {
                     << "setting " << spec.key << "=" << *value << " changed " << other.key;
         }
         const std::string section = spec.key.substr(0, spec.key.find('.'));
-        for (const char* group : {"shadow", "voxel", "atlas", "reference"}) {
+        for (const char* group : {"shadow", "voxel", "atlas", "reference", "linespace"}) {
             EXPECT_EQ(sectionEquals(group, settings, defaults), group != section)
                     << spec.key << " and the " << group << " settings";
         }
