@@ -67,6 +67,12 @@ const std::vector<SettingHotkey>& settingHotkeys() {
                 [](Settings& s, float) { s.shadow.rays = std::max(1, s.shadow.rays / 2); }},
         {"U", "shadow rays per area light x 2", "shadow.rays",
                 [](Settings& s, float) { s.shadow.rays = std::min(1024, s.shadow.rays * 2); }},
+        {"N", "line space: children per axis N = 4 .. 10 (rebuilds it)", "linespace.n",
+                [](Settings& s, float) { s.lineSpace.n = s.lineSpace.n >= 10 ? 4 : s.lineSpace.n + 1; }},
+        {"M", "line space: depth 2, 3, 4 (rebuilds it)", "linespace.depth",
+                [](Settings& s, float) {
+                    s.lineSpace.depth = s.lineSpace.depth >= 4 ? 2 : s.lineSpace.depth + 1;
+                }},
     };
     return hotkeys;
 }
