@@ -78,35 +78,20 @@ int flatten(const BuildNode* node, const RTCBounds& bounds, const std::vector<gl
 
 } // namespace
 
-bool buildGpuBvh(const scene::Scene& scene,
-        const std::function<bool(std::size_t instance, std::size_t triangle)>& skip, GpuBvh& bvh,
-        std::string& error) {
+bool buildGpuBvh(const std::vector<glm::vec4>& corners, GpuBvh& bvh, std::string& error) {
     const auto start = std::chrono::steady_clock::now();
     bvh = GpuBvh{};
-    std::vector<glm::vec4> corners;
     std::vector<RTCBuildPrimitive> primitives;
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const scene::Instance& instance = scene.instances[i];
-        const scene::Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
-        for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
-            if (skip && skip(i, t / 3)) continue;
-            glm::vec3 p[3];
-            for (int k = 0; k < 3; ++k) {
-                p[k] = glm::vec3(instance.worldFromLocal *
-                                 glm::vec4(primitive.positions[primitive.indices[t + std::size_t(k)]], 1.0f));
-            }
-            const float area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-            if (!(area > 0.0f) || !std::isfinite(area)) continue;
-            RTCBuildPrimitive build{};
-            const glm::vec3 lo = glm::min(p[0], glm::min(p[1], p[2]));
-            const glm::vec3 hi = glm::max(p[0], glm::max(p[1], p[2]));
-            build.lower_x = lo.x, build.lower_y = lo.y, build.lower_z = lo.z;
-            build.upper_x = hi.x, build.upper_y = hi.y, build.upper_z = hi.z;
-            build.geomID = 0;
-            build.primID = unsigned(primitives.size());
-            primitives.push_back(build);
-            for (const glm::vec3& corner : p) corners.push_back(glm::vec4(corner, 0.0f));
-        }
+    for (std::size_t t = 0; t + 2 < corners.size(); t += 3) {
+        const glm::vec3 a(corners[t]), b(corners[t + 1]), c(corners[t + 2]);
+        const glm::vec3 lo = glm::min(a, glm::min(b, c));
+        const glm::vec3 hi = glm::max(a, glm::max(b, c));
+        RTCBuildPrimitive build{};
+        build.lower_x = lo.x, build.lower_y = lo.y, build.lower_z = lo.z;
+        build.upper_x = hi.x, build.upper_y = hi.y, build.upper_z = hi.z;
+        build.geomID = 0;
+        build.primID = unsigned(t / 3);
+        primitives.push_back(build);
     }
     if (primitives.empty()) {
         // One empty leaf with inverted bounds: every ray misses it.

@@ -10,7 +10,6 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,11 +30,8 @@ struct GpuBvh {
     std::size_t bytes() const { return (nodes.size() + triangles.size()) * sizeof(glm::vec4); }
 };
 
-// Over every triangle of every instance in its current pose, except those `skip` returns true
-// for (instance index, triangle index); degenerate triangles are left out. False with `error`
-// when Embree fails.
-bool buildGpuBvh(const scene::Scene& scene,
-        const std::function<bool(std::size_t instance, std::size_t triangle)>& skip, GpuBvh& bvh,
-        std::string& error);
+// Over the triangles given as three world-space corners each (w ignored; render/ShadowCasters.h
+// collects them). False with `error` when Embree fails.
+bool buildGpuBvh(const std::vector<glm::vec4>& corners, GpuBvh& bvh, std::string& error);
 
 } // namespace gi::reference

@@ -12,13 +12,8 @@ bool BvhShadows::update(const scene::Scene& scene, const std::vector<scene::Ligh
         emitters.insert(emitters.end(), light.emitters.begin(), light.emitters.end());
     }
     if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters) return true;
-    const std::set<std::pair<int, int>> lightTriangles = emitterTriangles(lights);
     reference::GpuBvh bvh;
-    const bool ok = reference::buildGpuBvh(scene,
-            [&](std::size_t instance, std::size_t triangle) {
-                return lightTriangles.count({int(instance), int(triangle)}) > 0;
-            },
-            bvh, error);
+    const bool ok = reference::buildGpuBvh(shadowCasterCorners(scene, lights), bvh, error);
     if (!ok) return false;
     mBvh = std::move(bvh);
     mNodes = gl::createBuffer(mBvh.nodes.size() * sizeof(glm::vec4), mBvh.nodes.data(), 0, "render/bvh/nodes");
