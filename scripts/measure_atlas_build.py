@@ -26,8 +26,7 @@ def atlas_memory(memory):
     """Bytes: (atlas-sized layers and G-buffer depth, atlas geometry, screen-sized resolve)."""
     geometry = sum(v for k, v in memory.items() if k in ("atlas/vertices", "atlas/indices"))
     screen = sum(v for k, v in memory.items() if k in ("atlas/indirect", "atlas/resolve_depth"))
-    total = sum(v for k, v in memory.items()
-                if k.startswith("atlas/") and not k.startswith("atlas/occupancy/"))
+    total = sum(v for k, v in memory.items() if k.startswith("atlas/"))
     return total - geometry - screen, geometry, screen
 
 

@@ -13,6 +13,10 @@
 //                          direct illumination and stochastic shadows").
 // SHADOW_METHOD_LINESPACE  the same rays through the N-tree's line spaces (linespace.glsl),
 //                          which keep two leaf voxels off the surfaces at both ends.
+// SHADOW_METHOD_VOXEL      one cone per light through the voxel occupancy
+//                          (voxel_shadow_cone.glsl), widening with an area light's size;
+//                          it stops short of the light by its bounding radius, since the
+//                          light's own surface (and what it is mounted on) is voxelized too.
 #ifndef GI_DIRECT_VISIBILITY_GLSL
 #define GI_DIRECT_VISIBILITY_GLSL
 
@@ -21,6 +25,7 @@
 #include "hash.glsl"
 #include "linespace.glsl"
 #include "shadows.glsl"
+#include "voxel_shadow_cone.glsl"
 
 float emitterSamplingWeight(GpuEmitter e) {
     vec3 l = e.radiance.rgb;
@@ -91,6 +96,24 @@ float areaLightRayVisibility(GpuLight light, vec3 origin, vec3 n, inout uint sta
     return sent > 0.0 ? arrived / sent : 1.0;
 }
 
+const float kVoxelShadowApertureScale = 0.25;
+
+float voxelShadowCone(GpuLight light, vec3 position, vec3 n) {
+    int type = int(light.positionAndType.w);
+    if (type == LIGHT_SKY) return 1.0;
+    vec3 toLight;
+    float distance;
+    lightDirection(light, position, toLight, distance);
+    if (type == LIGHT_DIRECTIONAL) return voxelConeVisibility(position, n, toLight, 1e30, 0.0);
+    float radius = type == LIGHT_AREA ? light.spotCone.w : 0.0;
+    // A quarter of the light's angular radius: the coarse voxels a wider cone reads spill
+    // over the walls beside its path. On the emissive Cornell box (scripts/measure_shadows.py)
+    // the full radius gave a relative RMSE of 0.28, half 0.21, a quarter 0.18 (energy 0.93).
+    float tanHalfAngle = kVoxelShadowApertureScale * radius / max(distance, 1e-6);
+    float end = distance - radius - 2.0 * levelVoxelSize(0);
+    return end > 0.0 ? voxelConeVisibility(position, n, toLight, end, min(tanHalfAngle, 1.0)) : 1.0;
+}
+
 // `state`: the caller's random state (e.g. seeded from the pixel), advanced here.
 float directVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLight,
         inout uint state) {
@@ -100,6 +123,7 @@ float directVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLi
     }
     GpuLight light = lights[lightIndex];
     int type = int(light.positionAndType.w);
+    if (int(frame.shadowing.x) == SHADOW_METHOD_VOXEL) return voxelShadowCone(light, position, n);
     vec3 origin = position + n * shadowRayOffset();
     if (type == LIGHT_AREA) return areaLightRayVisibility(light, origin, n, state);
     if (type == LIGHT_SKY) return 1.0;

@@ -194,7 +194,8 @@
 #define SHADOW_METHOD_SHADOWMAP     0   // shadow maps (area lights: from their centre)
 #define SHADOW_METHOD_BVH           1   // rays through the scene's BVH (GpuBvh)
 #define SHADOW_METHOD_LINESPACE     2   // rays through an N-tree's line spaces (linespace.glsl)
-#define SHADOW_METHOD_COUNT         3
+#define SHADOW_METHOD_VOXEL         3   // a cone through the voxel occupancy (voxel_shadow_cone.glsl)
+#define SHADOW_METHOD_COUNT         4
 
 #define LINESPACE_EMPTY             0xFFFFFFFFu // a child without geometry
 #define LINESPACE_LOCAL_SIZE        64  // invocations per group of the build's compute passes
@@ -242,7 +243,9 @@ struct GpuLight {                       // std430
                                         // w = unused
     vec4 spotCone;                      // x = cos(inner), y = cos(outer), z = smallest
                                         // squared distance 1/r^2 uses (m^2), w = unused;
-                                        // area: x = first GpuEmitter, y = their count
+                                        // area: x = first GpuEmitter, y = their count,
+                                        // w = radius of the sphere about the centre that
+                                        // holds every emitter (m)
 };
 
 struct GpuEmitter {                     // std430, one triangle of an area light

@@ -2,6 +2,7 @@
 
 #include "app/SceneSetup.h"
 #include "render/ResourcePlan.h"
+#include "render/ShadowMethodReport.h"
 #include "scene/Animation.h"
 #include "scene/GpuScene.h"
 
@@ -142,6 +143,10 @@ int runInfo(const Config& config) {
                                                 : glm::vec3(scene.cameras.front().worldFromCamera[3]);
     const render::ResourcePlan plan = render::planResources(scene, scene.lights, config.settings, eye);
     std::printf("%s", render::describePlan(plan, config.plan.why).c_str());
+    const Settings planned = render::applyPlan(config.settings, plan);
+    const render::ShadowMethodReport shadows =
+            render::plannedShadowMethod(scene, render::plannedLights(scene.lights, plan), planned);
+    std::printf("  %s\n", render::describeShadowMethod(shadows).c_str());
     return 0;
 }
 

@@ -178,7 +178,8 @@ int runRender(const Config& config) {
         return TimingsReport{config.scenePath, render::giModeName(config.mode),
                 std::string(context->provider()), context->description(),
                 profiler.mode() == gl::TimingMode::Finish ? "finish" : "queries", width, height,
-                config.settings.frames, profiler.timings(), renderer.memory()};
+                config.settings.frames, profiler.timings(), renderer.memory(),
+                renderer.shadowReport()};
     };
     // Auto exposure meters the pixels that show geometry, not the empty background.
     const std::vector<float> coverage = config.toneMapping.autoExposure

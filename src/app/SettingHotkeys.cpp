@@ -59,7 +59,7 @@ const std::vector<SettingHotkey>& settingHotkeys() {
                 [](Settings& s, float) {
                     s.voxel.injectFragmentMean = !s.voxel.injectFragmentMean;
                 }},
-        {"K", "shadows of direct light: shadow maps / BVH rays / line-space rays", "shadow.method",
+        {"K", "shadows of direct light: shadow maps / BVH rays / line-space rays / voxel cone", "shadow.method",
                 [](Settings& s, float) {
                     s.shadow.method = (s.shadow.method + 1) % SHADOW_METHOD_COUNT;
                 }},

@@ -22,10 +22,14 @@ std::string timingsJson(const TimingsReport& report) {
         memory[item.name] = item.bytes;
         total += item.bytes;
     }
+    const render::ShadowMethodReport& sh = report.shadows;
+    const nlohmann::json shadows = {{"method", sh.method}, {"rays", sh.rays},
+            {"structure", sh.structure}, {"build_ms", sh.buildMs}, {"bytes", sh.bytes}};
     const nlohmann::json json = {{"scene", report.scene}, {"mode", report.mode},
             {"gl_provider", report.provider}, {"gl_renderer", report.renderer},
             {"timing", report.timing}, {"width", report.width}, {"height", report.height}, {"frames", report.frames},
-            {"passes", passes}, {"memory_bytes", memory}, {"memory_bytes_total", total}};
+            {"passes", passes}, {"memory_bytes", memory}, {"memory_bytes_total", total},
+            {"shadows", shadows}};
     return json.dump(2) + "\n";
 }
 

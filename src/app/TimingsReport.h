@@ -1,9 +1,11 @@
 // The --timings JSON: per-pass GPU milliseconds (median and mean over the timed frames),
-// CPU issue time, and the GPU memory each resource allocated, for scripts and the bench.
+// CPU issue time, the GPU memory each resource allocated, and what the shadow method built,
+// for scripts and the bench.
 #pragma once
 
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
+#include "render/ShadowMethodReport.h"
 
 #include <string>
 #include <vector>
@@ -16,6 +18,7 @@ struct TimingsReport {
     int width = 0, height = 0, frames = 0;
     std::vector<gl::PassTiming> passes;
     std::vector<gl::MemoryItem> memory;
+    render::ShadowMethodReport shadows;   // the shadow method's structure, build and memory
 };
 
 [[nodiscard]] std::string timingsJson(const TimingsReport& report);

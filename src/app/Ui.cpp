@@ -176,6 +176,7 @@ bool Ui::draw(const UiFrame& frame, Settings& settings, gl::GpuProfiler& profile
         ImGui::Text("exposure %s", frame.exposure.c_str());
         resolutionLine(frame);
         if (!frame.giStatus.empty()) ImGui::TextUnformatted(frame.giStatus.c_str());
+        if (!frame.shadowStatus.empty()) ImGui::TextUnformatted(frame.shadowStatus.c_str());
         const double fps = frame.frameMs > 0.0 ? 1000.0 / frame.frameMs : 0.0;
         char overlay[64];
         std::snprintf(overlay, sizeof overlay, "%.2f ms  %.1f fps", frame.frameMs, fps);

@@ -36,6 +36,7 @@ struct UiFrame {
     std::vector<gl::MemoryItem> memory;            // FrameRenderer::memory()
     std::string mode;                              // "direct", ...
     std::string giStatus;                          // GiTechnique::status(), may be empty
+    std::string shadowStatus;                      // render::describeShadowMethod
     std::string plan;                              // render::describePlan() of the renderer
     std::string output;                            // "final", "direct", "indirect"
     std::string exposure;                          // ViewerExposure::label()

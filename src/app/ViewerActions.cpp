@@ -165,6 +165,7 @@ UiFrame ViewerSession::uiFrame(double frameMs) const {
     if (const GiTechnique* technique = mRenderer->technique()) {
         frame.giStatus = technique->status();
     }
+    frame.shadowStatus = render::describeShadowMethod(mRenderer->shadowReport());
     frame.plan = render::describePlan(mRenderer->plan());
     frame.output = render::outputComponentName(mOutput);
     frame.exposure = mExposure.label();

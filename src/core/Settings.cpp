@@ -132,9 +132,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> float& { return s.shadow.pcfRadius; }),
         choiceSetting("shadow.method",
                 "shadows of the direct light the camera sees: maps from each light's centre, "
-                "rays through the scene's BVH, or rays through the line space of an N-tree "
-                "(linespace.n, linespace.depth)",
-                {"shadowmap", "bvh", "linespace"}, [](Settings& s) -> int& { return s.shadow.method; }),
+                "rays through the scene's BVH, rays through the line space of an N-tree "
+                "(linespace.n, linespace.depth), or one cone per light through a voxel "
+                "occupancy of the scene",
+                {"shadowmap", "bvh", "linespace", "voxel"}, [](Settings& s) -> int& { return s.shadow.method; }),
         intSetting("shadow.rays",
                 "shadow rays per pixel and area light with shadow.method=bvh or linespace", 1, 1024,
                 [](Settings& s) -> int& { return s.shadow.rays; }),
@@ -273,10 +274,11 @@ std::string settingsHelp() {
     std::ostringstream out;
     for (const SettingSpec& spec : settingSpecs()) {
         if (spec.hidden) continue;
-        char line[256];
-        std::snprintf(line, sizeof line, "  %-22s %-8s %s\n", spec.key.c_str(),
-                spec.get(defaults).c_str(), spec.help.c_str());
-        out << line;
+        // Key and default in columns; the help text as long as it is.
+        char columns[64];
+        std::snprintf(columns, sizeof columns, "  %-22s %-8s ", spec.key.c_str(),
+                spec.get(defaults).c_str());
+        out << columns << spec.help << '\n';
     }
     return out.str();
 }

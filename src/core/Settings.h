@@ -15,7 +15,7 @@ struct ShadowSettings {
     float normalOffset = 1.5f;    // shadow.normal_offset: texels of footprint along the normal
     float pcfRadius = 1.0f;       // shadow.pcf_radius: texels between PCF taps
     int method = 0;               // shadow.method: SHADOW_METHOD_* (0 shadowmap, 1 bvh,
-                                  // 2 linespace)
+                                  // 2 linespace, 3 voxel)
     int rays = 25;                // shadow.rays: shadow rays per pixel and area light (bvh,
                                   // linespace)
     bool operator==(const ShadowSettings&) const = default;

@@ -49,7 +49,7 @@ void forgetAllocation(StorageKind kind, GLuint id) noexcept;
 [[nodiscard]] std::vector<Allocation> liveAllocations();
 
 // Someone who allocates GPU memory and reports it (a FrameRenderer). Its rows are prefixed with
-// `prefix` ("atlas/occupancy/"), so a part it holds can keep its own owner and still be told
+// `prefix` ("occupancy/"), so a part it holds can keep its own owner and still be told
 // apart in the holder's report.
 class MemoryOwner {
 public:

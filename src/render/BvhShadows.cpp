@@ -6,12 +6,13 @@
 namespace gi::render {
 
 bool BvhShadows::update(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-        std::uint64_t geometryVersion, std::string& error) {
+        std::uint64_t geometryVersion, gl::GpuProfiler& profiler, std::string& error) {
     std::vector<scene::EmitterTriangle> emitters;
     for (const scene::Light& light : lights) {
         emitters.insert(emitters.end(), light.emitters.begin(), light.emitters.end());
     }
     if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters) return true;
+    const gl::GpuScope scope(profiler, "render/bvh/build");
     reference::GpuBvh bvh;
     const bool ok = reference::buildGpuBvh(shadowCasterCorners(scene, lights), bvh, error);
     if (!ok) return false;

@@ -3,6 +3,7 @@
 // the area lights change (their own triangles are left out, as from their shadow maps).
 #pragma once
 
+#include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "reference/GpuBvh.h"
 #include "scene/Scene.h"
@@ -17,8 +18,9 @@ class BvhShadows {
 public:
     // Rebuilds when `geometryVersion` or the lights' emitters differ from the last build.
     // False with `error` when the build fails (the previous buffers stay).
+    // A build is timed as the pass render/bvh/build.
     bool update(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-            std::uint64_t geometryVersion, std::string& error);
+            std::uint64_t geometryVersion, gl::GpuProfiler& profiler, std::string& error);
     // Binds the node and triangle buffers (empty ones before the first build).
     void bind();
     const reference::GpuBvh& bvh() const { return mBvh; }

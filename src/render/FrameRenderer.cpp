@@ -30,6 +30,7 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     const gl::MemoryScope memoryScope(mMemory);
     mShaders = &shaders;
     mSceneDescription = &scene;
+    mPosedScene = &scene;
     mAllLights = scene.lights;
     mRequested = settings;
     mPlan = planFor(settings);
@@ -79,18 +80,23 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
     occupancySettings.voxel.coverageMaxAxis = true;
     // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
     if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
+    // Shadow cones widen towards an area light: the coarser levels (the same scene at 2x and
+    // 4x the voxel) are their pre-filtered footprints. No more: the scene is all in the finest
+    // level, and the voxelization raster spans the coarsest, so each level more halves the
+    // raster samples per finest voxel.
+    if (voxelShadows()) occupancySettings.voxel.levels = kShadowConeLevels;
     std::string error;
     const gl::MemoryScope memoryScope(mOccupancyMemory);
     if (!mOccupancy) {
         mOccupancy = std::make_unique<voxel::VoxelizationManager>();
         if (!mOccupancy->init(*mShaders, *mSceneDescription, error)) {
-            std::fprintf(stderr, "atlas visibility: %s\n", error.c_str());
+            std::fprintf(stderr, "voxel occupancy: %s\n", error.c_str());
             mOccupancy.reset();
             return std::nullopt;
         }
     }
     if (!mOccupancy->configure(occupancySettings, error)) {
-        std::fprintf(stderr, "atlas visibility: %s\n", error.c_str());
+        std::fprintf(stderr, "voxel occupancy: %s\n", error.c_str());
         return std::nullopt;
     }
     mOccupancy->updateOccupancy({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize},
@@ -133,22 +139,28 @@ void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
 void FrameRenderer::setPose(const scene::Scene& scene) {
     const gl::MemoryScope memoryScope(mMemory);
     mScene->updateDynamic(scene);
-    updateShadowRays(scene);
+    mPosedScene = &scene;
     if (mScene->geometryVersion() != mShadowGeometry) {
         mShadowGeometry = mScene->geometryVersion();
         mShadows.invalidate();
     }
 }
 
-void FrameRenderer::updateShadowRays(const scene::Scene& scene) {
+bool FrameRenderer::voxelShadows() const {
+    return mSettings.shadow.enabled && mSettings.shadow.method == SHADOW_METHOD_VOXEL;
+}
+
+void FrameRenderer::updateShadowRays(gl::GpuProfiler& profiler) {
     if (!mSettings.shadow.enabled) return;
+    const scene::Scene& scene = *mPosedScene;
     std::string error;
     if (mSettings.shadow.method == SHADOW_METHOD_BVH &&
-            !mBvhShadows.update(scene, mLights, mScene->geometryVersion(), error)) {
+            !mBvhShadows.update(scene, mLights, mScene->geometryVersion(), profiler, error)) {
         std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
     }
     if (mSettings.shadow.method == SHADOW_METHOD_LINESPACE &&
-            !mLineSpace.update(*mShaders, scene, mLights, mScene->geometryVersion(), mSettings.lineSpace, error)) {
+            !mLineSpace.update(*mShaders, scene, mLights, mScene->geometryVersion(), mSettings.lineSpace,
+                    profiler, error)) {
         std::fprintf(stderr, "shadow.method=linespace: %s\n", error.c_str());
     }
 }
@@ -182,17 +194,20 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     mLastOutput = output;
     writeFrameUniforms(camera, output);
 
-    mShadows.execute({*mScene}, profiler);
+    // Without GI the shadow maps serve only shadow.method=shadowmap; GI injects with them.
+    if (mGi || mSettings.shadow.method == SHADOW_METHOD_SHADOWMAP) {
+        mShadows.execute({*mScene}, profiler);
+    }
+    const bool needsOccupancy = voxelShadows() ||
+            (mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL);
+    if (!needsOccupancy) mOccupancy.reset();
+    const std::optional<OccupancyVolume> occupancy =
+            needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
     GiOutputs gi;
     if (mGi) {
         const DebugView debugView = outputAvailable(output, mMode)
                                             ? outputEntry(output).debugView
                                             : DebugView::None;
-        const bool needsOccupancy =
-                mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL;
-        if (!needsOccupancy) mOccupancy.reset();
-        const std::optional<OccupancyVolume> occupancy =
-                needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
         mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView,
                             occupancy ? &*occupancy : nullptr},
                 profiler);
@@ -203,9 +218,14 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
                 GL_TEXTURE_2D, 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
         return;
     }
-    updateShadowRays(*mSceneDescription);
+    updateShadowRays(profiler);
     mBvhShadows.bind();
     mLineSpace.bind();
+    if (voxelShadows() && occupancy) {
+        // The technique may have bound its own cascade at the same slots.
+        glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, occupancy->coverage.id());
+        glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy->voxelUniforms.id());
+    }
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
                              mSettings.depthPrepass},
             {mTarget}, profiler);
@@ -247,6 +267,38 @@ std::vector<float> FrameRenderer::readbackCoverage() const {
     std::vector<float> coverage(std::size_t(averaged.width) * std::size_t(averaged.height));
     for (std::size_t i = 0; i < coverage.size(); ++i) coverage[i] = averaged.rgb[i * 3];
     return coverage;
+}
+
+ShadowMethodReport FrameRenderer::shadowReport() const {
+    ShadowMethodReport report = plannedShadowMethod(*mPosedScene, mLights, mSettings);
+    report.bound = false;
+    auto bytesUnder = [this](const std::string& prefix) {
+        std::size_t bytes = 0;
+        for (const gl::MemoryItem& item : memory()) {
+            if (item.name.rfind(prefix, 0) == 0) bytes += item.bytes;
+        }
+        return bytes;
+    };
+    const int method = mSettings.shadow.method;
+    if (!mSettings.shadow.enabled) return report;
+    if (method == SHADOW_METHOD_SHADOWMAP) {
+        report.bytes = bytesUnder("render/shadow/");
+    } else if (method == SHADOW_METHOD_VOXEL) {
+        report.bytes = bytesUnder("occupancy/");
+    } else if (method == SHADOW_METHOD_BVH) {
+        const reference::GpuBvh& bvh = mBvhShadows.bvh();
+        report.structure = "BVH over " + std::to_string(bvh.triangleCount()) + " triangles, " +
+                std::to_string(bvh.nodeCount()) + " nodes";
+        report.buildMs = bvh.buildSeconds * 1000.0;
+        report.bytes = bvh.bytes();
+    } else {
+        const LineSpaceStats& ls = mLineSpace.stats();
+        report.structure = "LS(" + std::to_string(ls.n) + "," + std::to_string(ls.depth) + ") over " +
+                std::to_string(ls.triangles) + " triangles, " + std::to_string(ls.nodes) + " nodes";
+        report.buildMs = ls.buildMilliseconds;
+        report.bytes = ls.bytes;
+    }
+    return report;
 }
 
 std::vector<gl::MemoryItem> FrameRenderer::memory() const {

@@ -14,6 +14,7 @@
 #include "render/OutputCatalog.h"
 #include "render/ResourcePlan.h"
 #include "scene/GpuScene.h"
+#include "render/ShadowMethodReport.h"
 #include "render/ShadowPass.h"
 #include "gi/GiTechnique.h"
 #include "gi/voxel/VoxelizationManager.h"
@@ -51,7 +52,7 @@ public:
     void setLights(const std::vector<scene::Light>& lights);
     // Uploads the current pose of `scene`'s animated instances (scene/Animation.h). Shadow
     // maps, voxel GI and the atlas follow them (the atlas keeps its charts and moves their
-    // vertices).
+    // vertices). `scene` must live until the next render.
     void setPose(const scene::Scene& scene);
 
     // Renders one frame of `camera` at outputSize x render.supersample.
@@ -74,10 +75,12 @@ public:
     const scene::GpuScene& gpuScene() const { return *mScene; }
 
     // The textures and buffers this renderer holds now, a row per label (gl/MemoryRegistry.h);
-    // the atlas' voxel occupancy under "atlas/occupancy/".
+    // the voxel occupancy (atlas visibility, voxel shadows) under "occupancy/".
     [[nodiscard]] std::vector<gl::MemoryItem> memory() const;
     // The last line-space build (shadow.method=linespace); zero before one.
     const LineSpaceStats& lineSpaceStats() const { return mLineSpace.stats(); }
+    // The active shadow method's structure, last build and memory.
+    [[nodiscard]] ShadowMethodReport shadowReport() const;
     // The active GI technique, or nullptr in direct mode.
     const GiTechnique* technique() const { return mGi.get(); }
 
@@ -86,8 +89,11 @@ private:
     std::vector<float> readTarget() const;
     // The camera's FrameUniforms for this frame: the only write of the buffer per frame.
     void writeFrameUniforms(const scene::CameraView& camera, OutputComponent output);
-    // Builds or refreshes the BVH or line space the shadow method traces, if it traces one.
-    void updateShadowRays(const scene::Scene& scene);
+    // shadow.method=voxel with shadows on: the forward pass reads the voxel occupancy.
+    bool voxelShadows() const;
+    // Builds or refreshes the BVH or line space the shadow method traces, if it traces one,
+    // for the scene as last posed.
+    void updateShadowRays(gl::GpuProfiler& profiler);
     std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);
 
     // The plan for `requested`, this scene and mAllLights; mSettings is applyPlan of it and
@@ -96,7 +102,7 @@ private:
 
     // What the entry points allocate is recorded as this renderer's (memory()).
     gl::MemoryOwner mMemory;
-    gl::MemoryOwner mOccupancyMemory{"atlas/occupancy/"};
+    gl::MemoryOwner mOccupancyMemory{"occupancy/"};
     Settings mSettings;     // in effect: mRequested with the plan's sizes
     Settings mRequested;    // as given to init() / setSettings()
     ResourcePlan mPlan;
@@ -114,11 +120,12 @@ private:
     std::uint64_t mShadowGeometry = 0;   // GpuScene::geometryVersion() the maps were drawn for
     GiMode mMode = GiMode::Direct;
     std::unique_ptr<GiTechnique> mGi;
-    // Voxel occupancy for the atlas' visibility (atlas.visibility=voxel): a scene-centred
-    // cascade, so the atlas stays independent of the view.
+    // Voxel occupancy for the atlas' visibility (atlas.visibility=voxel) and the voxel shadow
+    // cones (shadow.method=voxel): a scene-centred cascade, the same from every view.
     std::unique_ptr<voxel::VoxelizationManager> mOccupancy;
     gl::ShaderLibrary* mShaders = nullptr;
     const scene::Scene* mSceneDescription = nullptr;
+    const scene::Scene* mPosedScene = nullptr;   // the last setPose's scene (init's before)
     ForwardPass mForward;
 };
 

@@ -46,12 +46,13 @@ bool LineSpaceShadows::buildPrograms(gl::ShaderLibrary& shaders, std::string& er
 
 bool LineSpaceShadows::update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
         const std::vector<scene::Light>& lights, std::uint64_t geometryVersion,
-        const LineSpaceSettings& settings, std::string& error) {
+        const LineSpaceSettings& settings, gl::GpuProfiler& profiler, std::string& error) {
     std::vector<scene::EmitterTriangle> emitters = allEmitters(lights);
     if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters &&
             mStats.n == settings.n && mStats.depth == settings.depth) {
         return true;
     }
+    const gl::GpuScope scope(profiler, "render/linespace/build");
     mBuilt = true;
     mGeometryVersion = geometryVersion;
     mEmitters = std::move(emitters);

@@ -12,6 +12,7 @@
 // and the occupancy are freed after the build.
 #pragma once
 
+#include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
 #include "render/LineSpaceLayout.h"
@@ -35,10 +36,11 @@ class LineSpaceShadows {
 public:
     // Rebuilds when `geometryVersion`, the lights' emitters or n / depth differ from the last
     // build (the programs are built on first use). False with `error` when the build fails:
-    // nothing is occluded then, and it is not tried again for the same inputs.
+    // nothing is occluded then, and it is not tried again for the same inputs. A build is
+    // timed as the pass render/linespace/build.
     bool update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
             const std::vector<scene::Light>& lights, std::uint64_t geometryVersion,
-            const LineSpaceSettings& settings, std::string& error);
+            const LineSpaceSettings& settings, gl::GpuProfiler& profiler, std::string& error);
     // Binds the node and line-space pools (an empty tree before the first build).
     void bind();
     const LineSpaceStats& stats() const { return mStats; }

@@ -199,6 +199,13 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
         if (light.type == LightType::Area) {
             g.spotCone.x = float(emitters.size());
             g.spotCone.y = float(light.emitters.size());
+            float radius = 0.0f;
+            for (const EmitterTriangle& t : light.emitters) {
+                for (const glm::vec3& p : {t.p0, t.p1, t.p2}) {
+                    radius = std::max(radius, glm::length(p - light.position));
+                }
+            }
+            g.spotCone.w = radius;
             for (const EmitterTriangle& t : light.emitters) {
                 emitters.push_back({glm::vec4(t.p0, 0.0f), glm::vec4(t.p1, 0.0f), glm::vec4(t.p2, 0.0f),
                         glm::vec4(t.radiance * exposure, t.twoSided ? 1.0f : 0.0f)});

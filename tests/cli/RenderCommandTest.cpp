@@ -71,6 +71,39 @@ TEST(RenderCommand, WritesPngHdrAndTimings) {
     fs::remove_all(dir);
 }
 
+// Each shadow method reports what it traces, its build and its memory; the timed passes
+// include the build of the structure it needs.
+TEST(RenderCommand, TimingsReportTheShadowMethodsStructures) {
+    const std::string dir = makeTempDir("render-shadow-timings");
+    const std::string emissive =
+            std::string(VOXATLAS_DATA_DIR) + "/assets/cornell_box/cornell_box_emissive.gltf";
+    struct Expected {
+        const char* method;
+        const char* structure;
+        const char* pass;   // "" when the method has no pass of its own
+    };
+    for (const Expected& e : {Expected{"shadowmap", "a map per light", "render/shadow"},
+                 Expected{"bvh", "BVH over 30 triangles", "render/bvh/build"},
+                 Expected{"voxel", "occupancy 32^3 x 3 levels", "voxel/voxelize"}}) {
+        const ProcessResult r = runVoxatlas({"render", emissive, "--out", dir + "/a.png",
+                "--timings", dir + "/t.json", "--width", "32", "--height", "32", "--set",
+                std::string("shadow.method=") + e.method});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::ifstream json(dir + "/t.json");
+        const nlohmann::json timings = nlohmann::json::parse(json);
+        const nlohmann::json& shadows = timings["shadows"];
+        EXPECT_EQ(shadows["method"], e.method);
+        EXPECT_NE(shadows["structure"].get<std::string>().find(e.structure), std::string::npos)
+                << shadows.dump();
+        EXPECT_GT(shadows["bytes"].get<double>(), 0.0) << e.method;
+        bool sawPass = false;
+        for (const auto& pass : timings["passes"]) sawPass = sawPass || pass["name"] == e.pass;
+        EXPECT_TRUE(sawPass) << e.method << " without " << e.pass;
+        if (std::string(e.method) == "bvh") EXPECT_GT(shadows["build_ms"].get<double>(), 0.0);
+    }
+    fs::remove_all(dir);
+}
+
 TEST(RenderCommand, WritesPfm) {
     const std::string dir = makeTempDir("render-pfm");
     const ProcessResult r = runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--hdr",

@@ -20,36 +20,13 @@ constexpr float kPlateHalf = 0.2f;
 constexpr float kPlateHeight = 0.5f;
 constexpr int kSize = 64;
 
-// A grey floor (half-size 1) with a black double-sided plate above its centre.
-scene::Scene floorWithPlate() {
-    scene::Scene scene;
-    scene::Material grey, black;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    black.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    black.doubleSided = true;
-    scene.materials = {grey, black};
-    addPrimitive(scene, horizontalSquare(1.0f, 0.0f));
-    scene::Primitive plate = horizontalSquare(kPlateHalf, kPlateHeight);
-    plate.material = 1;
-    addPrimitive(scene, plate);
-    scene.cameras.push_back(lookAtCamera({0.0f, 0.3f, 2.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
-    return scene;
-}
-
 core::Image renderBvh(const scene::Scene& scene, int rays) {
-    Settings settings;
-    settings.specular = 0.0f;
-    settings.shadow.method = SHADOW_METHOD_BVH;
-    settings.shadow.rays = rays;
-    gl::ShaderLibrary shaders;
-    render::FrameRenderer renderer;
-    std::string error;
-    EXPECT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
-    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
-    gl::GpuProfiler profiler;
-    renderer.render(camera, {kSize, kSize}, render::OutputComponent::Final, profiler);
-    profiler.flush();
-    return renderer.readback();
+    RenderRequest request;
+    request.width = request.height = kSize;
+    request.settings.specular = 0.0f;
+    request.settings.shadow.method = SHADOW_METHOD_BVH;
+    request.settings.shadow.rays = rays;
+    return renderScene(scene, request);
 }
 
 // Whether the segment from floor point p to y crosses the plate.
@@ -61,7 +38,7 @@ bool plateBlocks(const glm::vec3& p, const glm::vec3& y) {
 }
 
 TEST_F(BvhShadowGpuTest, PointLightShadowIsExactPerPixel) {
-    scene::Scene scene = floorWithPlate();
+    scene::Scene scene = floorWithPlate(kPlateHalf, kPlateHeight);
     scene::Light light;
     light.position = glm::vec3(0.0f, 1.0f, 0.0f);
     scene.lights = {light};
@@ -92,7 +69,7 @@ TEST_F(BvhShadowGpuTest, PointLightShadowIsExactPerPixel) {
 }
 
 TEST_F(BvhShadowGpuTest, AreaLightPenumbraMatchesVisibleShare) {
-    scene::Scene scene = floorWithPlate();
+    scene::Scene scene = floorWithPlate(kPlateHalf, kPlateHeight);
     scene::Material emitter;
     emitter.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     emitter.emissiveFactor = glm::vec3(4.0f);

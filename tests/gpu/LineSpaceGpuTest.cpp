@@ -24,22 +24,6 @@ constexpr float kPlateHalf = 0.2f;
 constexpr float kPlateHeight = 0.5f;
 constexpr int kSize = 64;
 
-// A grey floor (half-size 1) with a black double-sided plate above its centre.
-scene::Scene floorWithPlate() {
-    scene::Scene scene;
-    scene::Material grey, black;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    black.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    black.doubleSided = true;
-    scene.materials = {grey, black};
-    addPrimitive(scene, horizontalSquare(1.0f, 0.0f));
-    scene::Primitive plate = horizontalSquare(kPlateHalf, kPlateHeight);
-    plate.material = 1;
-    addPrimitive(scene, plate);
-    scene.cameras.push_back(lookAtCamera({0.0f, 0.3f, 2.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
-    return scene;
-}
-
 struct Rendered {
     core::Image image;
     std::vector<float> coverage;
@@ -72,7 +56,7 @@ bool plateBlocks(const glm::vec3& p, const glm::vec3& y) {
 }
 
 TEST_F(LineSpaceGpuTest, PointLightShadowIsExactAwayFromItsEdge) {
-    scene::Scene scene = floorWithPlate();
+    scene::Scene scene = floorWithPlate(kPlateHalf, kPlateHeight);
     scene::Light light;
     light.position = glm::vec3(0.0f, 1.0f, 0.0f);
     scene.lights = {light};

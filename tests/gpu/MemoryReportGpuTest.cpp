@@ -126,7 +126,7 @@ TEST_F(MemoryReportGpuTest, ReportIsWhatTheGlHoldsInEveryMode) {
                 EXPECT_TRUE(hasRow(report, "atlas/debug_view"));
             }
             if (c.atlasVisibility == ATLAS_VISIBILITY_VOXEL) {
-                EXPECT_TRUE(hasRow(report, "atlas/occupancy/voxel/albedo"));
+                EXPECT_TRUE(hasRow(report, "occupancy/voxel/albedo"));
             }
         }
         EXPECT_EQ(gl::liveAllocations().size(), before.size())

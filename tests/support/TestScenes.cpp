@@ -31,6 +31,21 @@ void addPrimitive(scene::Scene& scene, scene::Primitive primitive) {
     scene.instances.push_back(instance);
 }
 
+scene::Scene floorWithPlate(float plateHalf, float plateHeight) {
+    scene::Scene scene;
+    scene::Material grey, black;
+    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    black.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    black.doubleSided = true;
+    scene.materials = {grey, black};
+    addPrimitive(scene, horizontalSquare(1.0f, 0.0f));
+    scene::Primitive plate = horizontalSquare(plateHalf, plateHeight);
+    plate.material = 1;
+    addPrimitive(scene, plate);
+    scene.cameras.push_back(lookAtCamera({0.0f, 0.3f, 2.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
+    return scene;
+}
+
 scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target, float yfovDegrees) {
     scene::Camera camera;
     const glm::vec3 forward = glm::normalize(target - eye);

@@ -13,6 +13,11 @@ namespace gi::test {
 // Adds `primitive` with an identity transform and grows the scene bounds.
 void addPrimitive(scene::Scene& scene, scene::Primitive primitive);
 
+// A grey floor (half-size 1, albedo 0.5) with a black double-sided plate of half-size
+// `plateHalf` at `plateHeight` above its centre, seen from (0, 0.3, 2.2): the shadow tests'
+// occluder, whose shadow follows from similar triangles. No lights.
+[[nodiscard]] scene::Scene floorWithPlate(float plateHalf, float plateHeight);
+
 // A camera at `eye` looking at `target`.
 [[nodiscard]] scene::Camera lookAtCamera(const glm::vec3& eye, const glm::vec3& target,
         float yfovDegrees);
