@@ -102,7 +102,7 @@ def main():
               "(tests/gpu/AreaLightGpuTest.cpp holds it to the form factor within 0.5%); what "
               "remains is shadowing and pixel footprint: these images sample each pixel at "
               "its centre while the path tracer averages its square "
-              "(`docs/results-shadows.md` compares them at render.supersample=4).",
+              "(`docs/results-linespace.md` compares them at render.supersample=4).",
               "- Without GI (`--mode direct`) nothing tells where the sky is visible: every "
               "surface gets the open-hemisphere term, so the box's inside is lit as if it "
               "had no walls (energy above 2).",

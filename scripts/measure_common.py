@@ -175,6 +175,15 @@ def errors(image, reference, mask=None):
     return (float(((a - b) ** 2).sum() / (b ** 2).sum()) ** 0.5, float(a.sum() / b.sum()))
 
 
+def write_png(path, rgb, scale=1):
+    """rgb: float rows top-down in [0, 1], written as an 8-bit PNG, each pixel `scale` x
+    `scale` (nearest) so small error images stay readable."""
+    from PIL import Image
+    pixels = (numpy.clip(rgb, 0.0, 1.0) * 255.0 + 0.5).astype(numpy.uint8)
+    pixels = pixels.repeat(scale, axis=0).repeat(scale, axis=1)
+    Image.fromarray(pixels, "RGB").save(path)
+
+
 def mib(n):
     return f"{n / 2**20:.1f} MiB" if n >= 2**20 else f"{n / 2**10:.1f} KiB"
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The shadow methods (shadow.method) against the path tracer and against each other, written
-to docs/results-shadows.md:
+to docs/results-linespace.md:
 - accuracy: the direct light of the emissive Cornell box (assets/cornell_box/
   cornell_box_emissive.gltf, lit only by its ceiling panel) by each method at shadow.rays=25,
   against the path tracer at 1024 spp, 96x96, on the surfaces the panel lights;
@@ -8,7 +8,9 @@ to docs/results-shadows.md:
   light, 256x256, over scenes of rising size: the shadow-scaling spheres (70 k, 1.1 M, 1.9 M
   triangles, assets/shadow_scaling/make_shadow_scenes.py) and Sponza (231 k) under a 3 m
   square area light; methods interleaved round by round, medians, ratios within a round;
-- memory of each method's structures (the memory report).
+- memory and build time of each method's structures (the --timings report's `shadows`),
+  beside the line-space paper's figures (SEEDS.md section 3).
+The N x depth sweep of the line space is scripts/measure_linespace_sweep.py.
 
 Usage: /usr/bin/python3 scripts/measure_shadows.py [--bin build/voxatlas] [--sponza PATH]
        [--rounds 3]
@@ -21,6 +23,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import measure_common as common  # noqa: E402
@@ -63,8 +67,25 @@ def accuracy(names, lines):
                               common.settings_args({**base, **gpu, "shadow.method": name}),
                               png, hdr=True).image
         rmse, energy = common.errors(image, reference, lit)
+        error_image(image, reference, lit, os.path.join(common.IMAGES, f"shadows_error_{name}.png"))
         lines.append(f"| {name} | {rmse:.3f} | {energy:.3f} | {targets.get(name, '')} |")
-    lines.append("")
+    lines += ["", "Error images `docs/images/shadows_error_<method>.png`: red where the method is "
+              "darker than the path tracer (over-occlusion), blue where it is brighter, full "
+              "colour at 50% of the reference; grey where the surface is not compared. The line "
+              "space's red seams along the blocks' silhouettes are its approximation (a ray "
+              "through a non-empty shaft one level above the leaves counts as blocked).", ""]
+
+
+def error_image(image, reference, mask, path):
+    ref = reference.mean(axis=2)
+    rel = (image.mean(axis=2) - ref) / np.maximum(ref, 1e-3 * ref[mask].mean())
+    rel = np.clip(rel / 0.5, -1.0, 1.0)
+    rgb = np.ones(ref.shape + (3,))
+    rgb[..., 1] = 1.0 - np.abs(rel)
+    rgb[..., 0] = np.where(rel < 0, 1.0, 1.0 - rel)
+    rgb[..., 2] = np.where(rel > 0, 1.0, 1.0 + rel)
+    rgb[~mask] = 0.35
+    common.write_png(path, rgb, scale=3)
 
 
 def forward_ms(scene, extra, method):
@@ -72,7 +93,19 @@ def forward_ms(scene, extra, method):
                                          "material.specular": 0}, 3, 1, 256,
                                  extra=extra, mode="direct").report
     times = common.pass_medians(report)
-    return times["render/forward"], report["memory_bytes"]
+    return times["render/forward"], report["shadows"]
+
+
+# LS(6,3) against the BVH in the paper (GTX 1080, 1024x1024, 25 rays per pixel): frame time
+# of LS / that of the BVH = BVH fps / LS fps, for the model nearest in size.
+PAPER = [(69_000, "Bunny 69k", 95.3 / 69.9), (871_000, "Dragon 871k", 22.4 / 33.6),
+         (1_090_000, "Buddha 1.09M", 16.4 / 60.8), (1_960_000, "Buddha+Dragon 1.96M", 12.7 / 26.6)]
+
+
+def paper_ratio(triangles):
+    count = int(triangles.replace(",", ""))
+    size, name, ratio = min(PAPER, key=lambda p: abs(p[0] - count))
+    return f"x{ratio:.2f} ({name})"
 
 
 def speed(names, scenes, rounds, lines):
@@ -82,27 +115,35 @@ def speed(names, scenes, rounds, lines):
               "within each round, then their median.", ""]
     header = "| scene | triangles | " + " | ".join(f"{n} (ms)" for n in names)
     ratio_names = [n for n in names if n != "bvh"] if "bvh" in names else []
-    header += "".join(f" | {n} / bvh" for n in ratio_names) + " | memory |"
+    header += "".join(f" | {n} / bvh" for n in ratio_names) + " | paper linespace / bvh |"
     lines += [header, "|" + "---|" * (header.count("|") - 1)]
+    builds = []
     for label, path, extra, triangles in scenes:
         per_method = {n: [] for n in names}
-        memory = {}
+        structures = {}
         for _ in range(rounds):
             for name in names:
-                ms, mem = forward_ms(path, extra, name)
+                ms, shadows = forward_ms(path, extra, name)
                 per_method[name].append(ms)
-                memory[name] = mem
+                structures[name] = shadows
         row = f"| {label} | {triangles} | " + " | ".join(
             f"{statistics.median(per_method[n]):.0f}" for n in names)
         for n in ratio_names:
             ratios = [a / b for a, b in zip(per_method[n], per_method["bvh"])]
             row += f" | x{statistics.median(ratios):.2f}"
-        structures = []
-        for n, prefix in (("bvh", "render/bvh/"), ("linespace", "render/linespace/")):
-            if n in memory:
-                total = sum(v for k, v in memory[n].items() if k.startswith(prefix))
-                structures.append(f"{n} {common.mib(total)}")
-        lines.append(row + " | " + ", ".join(structures) + " |")
+        lines.append(row + f" | {paper_ratio(triangles)} |")
+        builds.append((label, structures))
+    lines += ["", "## Structures: build time and memory", "",
+              "The last round's build of each method's structure (the --timings report's "
+              "`shadows`; shadow maps and the voxel occupancy are drawn every time the scene "
+              "changes and have no build of their own here). The paper: LS(6,3) 12-16 MB, built "
+              "in 100-131 ms; the BVH 4-77 MB (GTX 1080).", "",
+              "| scene | method | structure | build (ms) | memory |", "|---|---|---|---|---|"]
+    for label, structures in builds:
+        for name, shadows in structures.items():
+            build = f"{shadows['build_ms']:.0f}" if shadows["build_ms"] > 0 else ""
+            lines.append(f"| {label} | {name} | {shadows['structure']} | {build} | "
+                         f"{common.mib(shadows['bytes'])} |")
     lines.append("")
 
 
@@ -119,7 +160,8 @@ def main():
              "Made by `/usr/bin/python3 scripts/measure_shadows.py` "
              f"({time.strftime('%Y-%m-%d %H:%M')}, load average {load} at the start). "
              f"Methods in this build: {', '.join(names)}. Timings are llvmpipe's on a shared "
-             "2-core machine: compare ratios, not milliseconds.", ""]
+             "2-core machine: compare ratios, not milliseconds. The line space's N x depth "
+             "sweep: `docs/results-linespace-sweep.md`.", ""]
     accuracy(names, lines)
     with tempfile.TemporaryDirectory() as tmp:
         subprocess.run([sys.executable, GENERATOR, tmp], check=True, capture_output=True)
@@ -130,7 +172,7 @@ def main():
                    ("spheres 1.9M", os.path.join(tmp, "spheres_2m.gltf"), [], "1,948,804")]
         speed(names, scenes, args.rounds, lines)
     lines.append(f"Load average at the end: {open('/proc/loadavg').read().split()[0]}.")
-    common.write_page("results-shadows.md", lines)
+    common.write_page("results-linespace.md", lines)
     print("\n".join(lines))
 
 

@@ -2,7 +2,7 @@
 """Write the shadow-scaling scenes: a grey ground lit only by an emissive panel above it,
 with displaced spheres of 69,600 triangles each standing on it as instances of one mesh, so
 the triangle count grows while the file stays small. They measure how shadow rays scale with
-geometry (shadow.method, docs/results-shadows.md), as the line-space paper's scenes do
+geometry (shadow.method, docs/results-linespace.md), as the line-space paper's scenes do
 (Bunny 69 k, Buddha 1.09 M, Dragon + Buddha 1.96 M triangles).
 
   spheres_70k    1 sphere     69,602 triangles with the ground and the panel
