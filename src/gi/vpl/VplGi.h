@@ -1,0 +1,69 @@
+// Many-lights GI with virtual point lights (SEEDS.md section 4; Keller 1997, Dachsbacher and
+// Stamminger 2005, and the seed's interleaved sampling with voxel visibility). When lights or
+// geometry change:
+//   1. reflective shadow maps of every light (ReflectiveShadowMapPass, RsmViews),
+//   2. vpl.count VPLs drawn from their lit texels in proportion to flux (VplSampler);
+// every frame:
+//   3. the camera's G-buffer (VplGBufferPass),
+//   4. the gather (VplGatherPass): E_ind = sum phi/pi V cos cos / max(B, r^2), each pixel of a
+//      4x4 tile using one sixteenth of the VPLs, V through the voxel occupancy
+//      (vpl.visibility=cascade) or 1,
+//   5. the geometry-aware merge of the tiles (VplFilterPass) -> screen-space E_ind.
+// vpl.clamp = 0 takes B = (kClampFraction x the scene's diagonal)^2, so scaled scenes clamp
+// alike; results-vpl.md measures what the clamp costs in energy.
+#pragma once
+
+#include "gi/GiTechnique.h"
+#include "gi/vpl/ReflectiveShadowMapPass.h"
+#include "gi/vpl/VplFilterPass.h"
+#include "gi/vpl/VplGBufferPass.h"
+#include "gi/vpl/VplGatherPass.h"
+
+namespace gi::vpl {
+
+class VplGi final : public GiTechnique {
+public:
+    // B's edge as a fraction of the scene's diagonal when vpl.clamp = 0.
+    static constexpr float kClampFraction = 0.03f;
+
+    const char* name() const override { return "vpl"; }
+    bool init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) override;
+    bool configure(const Settings& settings, std::string& error) override;
+    void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
+    GiOutputs outputs() const override;
+    std::string status() const override;
+
+    // VPLs drawn at the last resampling (fewer than vpl.count only when nothing is lit).
+    int vplCount() const { return mVplCount; }
+    // B (m^2) of the gather's 1 / max(B, r^2).
+    float clampArea() const;
+
+private:
+    // What the VPLs were drawn from: another state draws them anew.
+    struct Source {
+        const scene::GpuScene* scene = nullptr;
+        std::vector<scene::Light> lights;
+        std::uint64_t geometryVersion = 0;
+        bool valid = false;
+    };
+
+    void resample(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
+    void writeUniforms(bool cascade);
+
+    VplSettings mSettings;
+    float mSceneDiagonal = 1.0f;
+    Source mSource;
+    int mVplCount = 0;
+    bool mWarnedNoOccupancy = false;
+    bool mHasOutput = false;
+
+    gl::Buffer mVpls;
+    gl::Buffer mUniforms;
+    ReflectiveShadowMapPass mRsm;
+    VplGBufferPass mGBuffer;
+    VplGatherPass mGather;
+    VplFilterPass mFilter;
+};
+
+} // namespace gi::vpl
