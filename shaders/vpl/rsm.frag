@@ -5,7 +5,8 @@
 //                        A = footprint / cos(theta_surface)                            (orthographic),
 // A being the surface area the pixel covers and E this light's unshadowed irradiance (the
 // view's depth test is the shadowing). For a point light this is rho * I * (the pixel's solid
-// angle), so the pixels of six faces hold rho times the light's whole power. Area lights are
+// angle), so the pixels of six faces hold rho times the light's whole power. The flux
+// target's alpha keeps A: the lit area sets the clamp's scale (VplGi.h). Area lights are
 // seen from their centre, E being the emitters' exact irradiance (lighting.glsl): the texels'
 // flux sums to the reflected power as the direct pass lights it.
 #include "../common/lighting.glsl"
@@ -45,5 +46,5 @@ void main() {
     }
     outPosition = vec4(vin.position, 1.0);
     outNormal = vec4(n, 1.0);
-    outFlux = vec4(baseColor.rgb * e * area, 1.0);
+    outFlux = vec4(baseColor.rgb * e * area, area);
 }

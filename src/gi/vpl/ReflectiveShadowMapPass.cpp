@@ -66,7 +66,7 @@ void ReflectiveShadowMapPass::drawView(const scene::GpuScene& scene, const RsmVi
     glDepthFunc(GL_LESS);
 }
 
-void ReflectiveShadowMapPass::readBack(std::vector<RsmTexel>& texels) const {
+void ReflectiveShadowMapPass::readBack(int light, std::vector<RsmTexel>& texels) const {
     const std::size_t count = std::size_t(mResolution) * std::size_t(mResolution);
     std::vector<glm::vec4> position(count), normal(count), flux(count);
     const auto bytes = GLsizei(count * sizeof(glm::vec4));
@@ -77,7 +77,7 @@ void ReflectiveShadowMapPass::readBack(std::vector<RsmTexel>& texels) const {
         if (position[i].w <= 0.0f) continue;
         const glm::vec3 f(flux[i]);
         if (!(f.r + f.g + f.b > 0.0f)) continue;
-        texels.push_back({glm::vec3(position[i]), glm::vec3(normal[i]), f});
+        texels.push_back({glm::vec3(position[i]), glm::vec3(normal[i]), f, flux[i].a, light});
     }
 }
 
@@ -95,7 +95,7 @@ std::vector<RsmTexel> ReflectiveShadowMapPass::execute(const scene::GpuScene& sc
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, scene.materialBuffer().id());
     for (const RsmView& view : views) {
         drawView(scene, view);
-        readBack(texels);
+        readBack(view.light, texels);
     }
     glDisable(GL_DEPTH_TEST);
     glUseProgram(0);

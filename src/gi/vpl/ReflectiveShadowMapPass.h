@@ -28,7 +28,7 @@ public:
 private:
     bool allocate(int resolution);
     void drawView(const scene::GpuScene& scene, const RsmView& view) const;
-    void readBack(std::vector<RsmTexel>& texels) const;
+    void readBack(int light, std::vector<RsmTexel>& texels) const;
 
     gl::ProgramRef mDepthProgram;
     gl::ProgramRef mProgram;

@@ -15,10 +15,22 @@ namespace {
 constexpr float kFilterDepthTolerance = 0.1f;
 constexpr float kFilterNormalCosine = 0.9f;
 
+// The surface area (m^2) the light that reaches most of the scene lights: each light's texels
+// cover every surface it sees once, so summing over lights would count shared surfaces twice.
+float largestLitArea(const std::vector<RsmTexel>& texels, std::size_t lightCount) {
+    std::vector<double> area(lightCount, 0.0);
+    for (const RsmTexel& texel : texels) {
+        if (texel.light >= 0 && std::size_t(texel.light) < lightCount) {
+            area[std::size_t(texel.light)] += texel.area;
+        }
+    }
+    return area.empty() ? 0.0f : float(*std::max_element(area.begin(), area.end()));
+}
+
 } // namespace
 
 bool VplGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) {
-    mSceneDiagonal = std::max(glm::length(scene.bounds.size()), 1e-6f);
+    (void)scene;
     mUniforms = gl::createBuffer(
             sizeof(shader::VplUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "vpl/uniforms");
     return mRsm.init(shaders, error) && mGBuffer.init(shaders, error) &&
@@ -38,8 +50,7 @@ bool VplGi::configure(const Settings& settings, std::string& error) {
 
 float VplGi::clampArea() const {
     if (mSettings.clamp > 0.0f) return mSettings.clamp;
-    const float edge = kClampFraction * mSceneDiagonal;
-    return edge * edge;
+    return kClampPerVplArea * mLitAreaPerVpl;
 }
 
 void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
@@ -48,11 +59,14 @@ void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const std::vector<RsmTexel> texels =
             mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
     std::vector<shader::GpuVpl> vpls = drawVpls(texels, mSettings.count);
+    mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(mSettings.count);
     mVplCount = int(vpls.size());
     // Keep a buffer of at least one VPL so the gather's binding is always valid.
     if (vpls.empty()) vpls.push_back({});
     mVpls = gl::createBuffer(vpls.size() * sizeof(shader::GpuVpl), vpls.data(), 0, "vpl/vpls");
     mSource = {&in.scene, in.lights, in.scene.geometryVersion(), true};
+    std::fprintf(stderr, "vpl: %d VPLs from %zu lit RSM texels, %.4g m^2 per VPL, clamp B %.4g m^2\n",
+            mVplCount, texels.size(), double(mLitAreaPerVpl), double(clampArea()));
 }
 
 const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
@@ -99,7 +113,7 @@ std::string VplGi::status() const {
     const char* visibility = mSettings.visibility == VPL_VISIBILITY_CASCADE ? "cascade" : "none";
     return "vpl " + std::to_string(mVplCount) + " VPLs, " +
            (mSettings.interleave ? "4x4 tiles" : "every VPL per pixel") + ", visibility " +
-           visibility;
+           visibility + ", B " + std::to_string(clampArea()) + " m^2";
 }
 
 } // namespace gi::vpl

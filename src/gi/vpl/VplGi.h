@@ -9,8 +9,11 @@
 //      4x4 tile using one sixteenth of the VPLs, V through the voxel occupancy
 //      (vpl.visibility=cascade) or 1,
 //   5. the geometry-aware merge of the tiles (VplFilterPass) -> screen-space E_ind.
-// vpl.clamp = 0 takes B = (kClampFraction x the scene's diagonal)^2, so scaled scenes clamp
-// alike; results-vpl.md measures what the clamp costs in energy.
+// vpl.clamp = 0 takes B = kClampPerVplArea x the surface area one VPL stands for (the area the
+// most widely lit light reaches, over vpl.count): the 1/r^2 spike is cut where one VPL no
+// longer stands for the light around it, which scales with the scene and with the VPL count
+// (a fraction of the scene's diagonal clamped a 40 m atrium over 1.2 m and lost a fifth of
+// its indirect light); results-vpl.md measures what the clamp costs in energy.
 #pragma once
 
 #include "gi/GiTechnique.h"
@@ -23,8 +26,8 @@ namespace gi::vpl {
 
 class VplGi final : public GiTechnique {
 public:
-    // B's edge as a fraction of the scene's diagonal when vpl.clamp = 0.
-    static constexpr float kClampFraction = 0.03f;
+    // B over the lit area per VPL when vpl.clamp = 0.
+    static constexpr float kClampPerVplArea = 0.25f;
 
     const char* name() const override { return "vpl"; }
     bool init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) override;
@@ -52,7 +55,7 @@ private:
     void writeUniforms(bool cascade);
 
     VplSettings mSettings;
-    float mSceneDiagonal = 1.0f;
+    float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
     Source mSource;
     int mVplCount = 0;
     bool mWarnedNoOccupancy = false;
