@@ -36,7 +36,7 @@ bool ReflectiveShadowMapPass::allocate(int resolution) {
     return true;
 }
 
-void ReflectiveShadowMapPass::drawView(const scene::GpuScene& scene, const RsmView& view) const {
+void ReflectiveShadowMapPass::drawView(const scene::GpuScene& scene, const scene::LightView& view) const {
     const glm::vec4 axis(view.axis, view.orthographic ? 1.0f : 0.0f);
     for (const GLuint program : {mDepthProgram.id(), mProgram.id()}) {
         glProgramUniformMatrix4fv(program, LOC_RSM_VIEW_PROJECTION, 1, GL_FALSE,
@@ -82,7 +82,7 @@ void ReflectiveShadowMapPass::readBack(int light, std::vector<RsmTexel>& texels)
 }
 
 std::vector<RsmTexel> ReflectiveShadowMapPass::execute(const scene::GpuScene& scene,
-        const std::vector<RsmView>& views, int resolution, gl::GpuProfiler& profiler) {
+        const std::vector<scene::LightView>& views, int resolution, gl::GpuProfiler& profiler) {
     std::vector<RsmTexel> texels;
     if (views.empty() || !allocate(resolution)) return texels;
     gl::GpuScope scope(profiler, "vpl/rsm");
@@ -93,7 +93,7 @@ std::vector<RsmTexel> ReflectiveShadowMapPass::execute(const scene::GpuScene& sc
     glDisable(GL_BLEND);
     scene.bindLights();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, scene.materialBuffer().id());
-    for (const RsmView& view : views) {
+    for (const scene::LightView& view : views) {
         drawView(scene, view);
         readBack(view.light, texels);
     }

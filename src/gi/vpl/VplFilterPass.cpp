@@ -1,5 +1,6 @@
 #include "gi/vpl/VplFilterPass.h"
 
+#include "gi/vpl/PixelDispatch.h"
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
@@ -23,13 +24,7 @@ void VplFilterPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VPL, in.uniforms.id());
     glBindTextureUnit(BIND_TEX_VPL_GATHERED, in.gathered.id());
     glBindTextureUnit(BIND_TEX_VPL_NORMAL, in.gBuffer.normal().id());
-    glBindImageTexture(BIND_IMG_VPL_TARGET, mResult.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-            GL_RGBA16F);
-    const glm::ivec2 groups = (size + VPL_LOCAL_SIZE - 1) / VPL_LOCAL_SIZE;
-    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
-    // Consumer: the forward pass samples the result.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    glUseProgram(0);
+    dispatchOverPixels(mResult, size);
 }
 
 } // namespace gi::vpl

@@ -1,5 +1,6 @@
 #include "gi/vpl/VplGatherPass.h"
 
+#include "gi/vpl/PixelDispatch.h"
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
@@ -34,13 +35,7 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
     }
-    glBindImageTexture(BIND_IMG_VPL_TARGET, mResult.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-            GL_RGBA16F);
-    const glm::ivec2 groups = (size + VPL_LOCAL_SIZE - 1) / VPL_LOCAL_SIZE;
-    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
-    // Consumer: the interleave filter reads the result.
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-    glUseProgram(0);
+    dispatchOverPixels(mResult, size);
 }
 
 } // namespace gi::vpl

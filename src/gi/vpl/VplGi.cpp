@@ -1,6 +1,5 @@
 #include "gi/vpl/VplGi.h"
 
-#include "gi/vpl/RsmViews.h"
 #include "gi/vpl/VplSampler.h"
 #include "gl/Shared.h"
 
@@ -54,8 +53,8 @@ float VplGi::clampArea() const {
 }
 
 void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
-    const std::vector<RsmView> views =
-            rsmViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
+    const std::vector<scene::LightView> views =
+            scene::lightViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
     const std::vector<RsmTexel> texels =
             mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
     std::vector<shader::GpuVpl> vpls = drawVpls(texels, mSettings.count);

@@ -1,7 +1,7 @@
 // Many-lights GI with virtual point lights (SEEDS.md section 4; Keller 1997, Dachsbacher and
 // Stamminger 2005, and the seed's interleaved sampling with voxel visibility). When lights or
 // geometry change:
-//   1. reflective shadow maps of every light (ReflectiveShadowMapPass, RsmViews),
+//   1. reflective shadow maps of every light (ReflectiveShadowMapPass through scene/LightViews.h),
 //   2. vpl.count VPLs drawn from their lit texels in proportion to flux (VplSampler);
 // every frame:
 //   3. the camera's G-buffer (VplGBufferPass),

@@ -1,4 +1,4 @@
-#include "gi/vpl/RsmViews.h"
+#include "scene/LightViews.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -6,10 +6,10 @@
 #include <array>
 #include <cmath>
 
-namespace gi::vpl {
+namespace gi::scene {
 namespace {
 
-float farthestCorner(const glm::vec3& p, const scene::Aabb& box) {
+float farthestCorner(const glm::vec3& p, const Aabb& box) {
     float farthest = 0.0f;
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 corner((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
@@ -23,10 +23,9 @@ glm::vec3 upFor(const glm::vec3& direction) {
     return std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
 }
 
-RsmView directionalView(int index, const scene::Light& light, const scene::Aabb& bounds,
-        float pixels) {
-    const glm::vec3 center = bounds.center();
-    const float radius = std::max(0.5f * glm::length(bounds.size()), 1e-6f);
+LightView directionalView(int index, const Light& light, const Aabb& region, float pixels) {
+    const glm::vec3 center = region.center();
+    const float radius = std::max(0.5f * glm::length(region.size()), 1e-6f);
     const glm::mat4 view = glm::lookAt(center - light.direction * (2.0f * radius), center,
             upFor(light.direction));
     const float pixel = 2.0f * radius / pixels;
@@ -36,22 +35,22 @@ RsmView directionalView(int index, const scene::Light& light, const scene::Aabb&
 
 } // namespace
 
-std::vector<RsmView> rsmViews(const std::vector<scene::Light>& lights, const scene::Aabb& bounds,
+std::vector<LightView> lightViews(const std::vector<Light>& lights, const Aabb& region,
         int resolution) {
-    std::vector<RsmView> views;
-    if (bounds.empty()) return views;
+    std::vector<LightView> views;
+    if (region.empty()) return views;
     const float pixels = float(std::max(resolution, 1));
     for (std::size_t i = 0; i < lights.size(); ++i) {
-        const scene::Light& light = lights[i];
+        const Light& light = lights[i];
         const int index = int(i);
-        if (light.type == scene::LightType::Sky) continue;
-        if (light.type == scene::LightType::Directional) {
-            views.push_back(directionalView(index, light, bounds, pixels));
+        if (light.type == LightType::Sky) continue;
+        if (light.type == LightType::Directional) {
+            views.push_back(directionalView(index, light, region, pixels));
             continue;
         }
-        const float far = farthestCorner(light.position, bounds);
+        const float far = farthestCorner(light.position, region);
         const float near = far * 1e-4f;
-        if (light.type == scene::LightType::Spot) {
+        if (light.type == LightType::Spot) {
             const float fov = std::min(
                     2.0f * light.outerConeAngle + glm::radians(2.0f), glm::radians(170.0f));
             const glm::mat4 view = glm::lookAt(light.position, light.position + light.direction,
@@ -69,10 +68,10 @@ std::vector<RsmView> rsmViews(const std::vector<scene::Light>& lights, const sce
         for (const auto& [direction, up] : faces) {
             views.push_back({index,
                     projection * glm::lookAt(light.position, light.position + direction, up),
-                    direction, false, pixel * pixel, light.type == scene::LightType::Area});
+                    direction, false, pixel * pixel, light.type == LightType::Area});
         }
     }
     return views;
 }
 
-} // namespace gi::vpl
+} // namespace gi::scene
