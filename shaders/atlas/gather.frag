@@ -25,14 +25,14 @@
 // A double-sided texel is two surfaces back to back (AtlasTextures.h): a sender sends each
 // side's own radiance to that side, and p(y) counts both sides' power; a receiver adds what
 // arrives against its normal to the back side's sum. With VISIBILITY_VOXEL each pair is
-// weighted by the voxel occupancy's transmittance (voxel_visibility.glsl).
+// weighted by the voxel occupancy's transmittance (common/voxel_visibility.glsl).
 // Output: the sums of both sides (before the 1/N normalisation) added to the running sums by
 // blending.
 #include "atlas_common.glsl"
 #include "../common/constants.glsl"
 #include "../common/hash.glsl"
 #ifdef VISIBILITY_VOXEL
-#include "voxel_visibility.glsl"
+#include "../common/voxel_visibility.glsl"
 #endif
 
 layout(binding = BIND_TEX_ATLAS_DIRECT) uniform sampler2D atlasDirect;

@@ -10,6 +10,7 @@
 
 #define BIND_UBO_VOXEL              1   // VoxelUniforms: cascade placement and trace parameters
 #define BIND_UBO_ATLAS              2   // AtlasUniforms: atlas size, sample set, estimator
+#define BIND_UBO_VPL                3   // VplUniforms: VPL count, interleaving, clamp
 
 // Shader storage buffers.
 #define BIND_SSBO_LIGHTS            0   // GpuLight[], every light of the scene
@@ -35,6 +36,7 @@
 #define BIND_SSBO_LINESPACE_BITS    13  // uint[]: every node's line space, one bit per shaft
 #define BIND_SSBO_LINESPACE_OCCUPANCY 14 // uint[] bits, build only: per N-tree level l = 0..d,
                                         // (N^l)^3 cells, x fastest; level d = the leaf voxels
+#define BIND_SSBO_VPLS              16  // GpuVpl[], the virtual point lights of gi/vpl
 #define BIND_SSBO_LINESPACE_INPUT   15  // build only: vec4[3 per triangle] world corners
                                         // (voxelization), or uvec4 (level, cell.xyz) per node
                                         // (line-space bits)
@@ -79,6 +81,11 @@
                                         // a = 1 surface, 0.5 dilated, 0 empty
 // The back side (against the normal) of double-sided texels: the same as the three above.
 // Single-sided texels leave them 0; scenes without double-sided materials have 1 x 1 ones.
+#define BIND_TEX_VPL_POSITION       8   // rgba32f camera G-buffer: xyz = world position (m),
+                                        // w = distance along the view axis (m), 0 = empty
+#define BIND_TEX_VPL_NORMAL         9   // rgba16f camera G-buffer: xyz = unit normal facing
+                                        // the eye, w = 1 where a surface is
+#define BIND_TEX_VPL_GATHERED       10  // rgba16f, E_ind of each pixel's VPL subset (x tiles^2)
 #define BIND_TEX_ATLAS_DIRECT_BACK  15
 #define BIND_TEX_ATLAS_SUMS_BACK    16
 #define BIND_TEX_ATLAS_LIT_BACK     17
@@ -96,6 +103,7 @@
 #define BIND_IMG_FILTER_TARGET      5   // rgba16f, filtered E_ind + view depth
 #define BIND_IMG_VOXEL_PYRAMID_SOURCE 6 // rgba16f, pyramid mip m-1 read while mip m is built
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
+#define BIND_IMG_VPL_TARGET         5   // rgba16f, the VPL gather's or filter's output
 #define BIND_IMG_VOXEL_DIRECTIONAL  5   // rgba16f (6v, v, v*l), voxel.anisotropic: while
                                         // voxelizing and injecting, per face f of a voxel
                                         // rgb = flux / face area of the surfaces seen from f,
@@ -136,6 +144,11 @@
 #define ATLAS_VIEW_INDIRECT         4
 #define ATLAS_VIEW_CHARTS           5
 
+#define VPL_LOCAL_SIZE              8   // the VPL gather and filter run 8x8 pixel groups
+#define VPL_TILE                    4   // interleaved sampling: 4x4 pixels, 16 VPL subsets
+#define VPL_VISIBILITY_NONE         0   // VPLs are never occluded
+#define VPL_VISIBILITY_CASCADE      1   // segment march through the voxel occupancy
+
 // Vertex attribute locations of the scene's vertex buffer.
 #define ATTR_POSITION               0   // vec3, world space, metres
 #define ATTR_NORMAL                 1   // vec3, world space, unit length
@@ -167,6 +180,11 @@
 #define LOC_LINESPACE_LEVEL         13  // int, N-tree level an occupancy reduction writes
 #define LOC_LINESPACE_COUNT         14  // uint, triangles (voxelization) or nodes (line spaces)
 #define LOC_LINESPACE_FIRST         15  // uint, first node of this line-space dispatch
+#define LOC_RSM_VIEW_PROJECTION     16  // mat4, world -> clip of the reflective shadow map view
+#define LOC_RSM_AXIS                17  // vec4, xyz = unit forward axis, w = 1 orthographic
+#define LOC_RSM_FOOTPRINT           18  // float, one RSM pixel: sr on the axis (perspective)
+                                        // or m^2 (orthographic)
+#define LOC_RSM_LIGHT               19  // int, index into GpuLight[] of the light drawn
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]
@@ -298,6 +316,20 @@ struct GpuShadow {                      // std430, one per light
                                         //     (perspective) or everywhere (orthographic)
     vec4 bias;                          // x = normal offset in texels, y = PCF radius in
                                         //     texels, z = 1 if orthographic, w = unused
+};
+
+struct GpuVpl {                         // std430, one virtual point light
+    vec4 position;                      // xyz = world position (m), w = unused
+    vec4 normal;                        // xyz = unit normal of its lit side, w = unused
+    vec4 flux;                          // rgb = flux it reflects (W, pre-exposed), w = unused
+};
+
+struct VplUniforms {                    // std140
+    ivec4 counts;                       // x = VPLs, y = tile edge (VPL_TILE, or 1 without
+                                        // interleaving), z = VPL_VISIBILITY_*, w = unused
+    vec4 gather;                        // x = clamp B of 1 / max(B, r^2) (m^2), y = the subset
+                                        // scale (tiles^2), z = filter depth tolerance
+                                        // (fraction of the depth), w = filter normal cosine
 };
 
 struct AtlasUniforms {                  // std140

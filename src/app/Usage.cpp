@@ -137,7 +137,7 @@ std::string usage(Command command) {
                "64x64 (128x72), 256 spp, the converged atlas at 400 samples and not in Sponza.\n"
                "--scene picks suite scenes by name.\n";
     default:
-        return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas] [--width W --height H]\n"
+        return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas|vpl] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"
                "        [--hdr F.exr|F.pfm] [--keys \"FRAME:KEY,...\"] [--drop FRAME:FILE ...]\n"
                "        [--move DX,DY,DZ [--move-frames N]] [--exposure auto|EV]\n"
@@ -147,7 +147,7 @@ std::string usage(Command command) {
                "       voxatlas bench --suite quick|full   (the accuracy scoreboard)\n"
                "       voxatlas info SCENE [--set key=value ...]\n"
                "SCENE defaults to the Cornell box; --mode picks the GI mode the viewer starts in\n"
-               "(keys 1-3 switch). Without a display, view renders a headless screenshot instead.\n"
+               "(keys 1-4 switch). Without a display, view renders a headless screenshot instead.\n"
                "The viewer starts at --exposure auto --tonemap filmic (keys - = X T change them).\n"
                "Scripted runs (--frames N): --keys presses keys, --drop opens a file as if it were\n"
                "dropped on the window, --move moves the camera by DX,DY,DZ metres each frame\n"

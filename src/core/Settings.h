@@ -84,6 +84,17 @@ struct AtlasSettings {
     bool operator==(const AtlasSettings&) const = default;
 };
 
+// Many-lights GI with virtual point lights (SEEDS.md section 4, gi/vpl).
+struct VplSettings {
+    int count = 1024;             // vpl.count: VPLs drawn from the reflective shadow maps
+    float clamp = 0.0f;           // vpl.clamp: B of 1 / max(B, r^2) (m^2); 0 = from the scene
+                                  // (VplGi.h: a fixed fraction of its diagonal, squared)
+    int visibility = 1;           // vpl.visibility: VPL_VISIBILITY_* (0 none, 1 cascade)
+    bool interleave = true;       // vpl.interleave: 4x4 tiles, each pixel 1/16 of the VPLs
+    int rsmResolution = 128;      // vpl.rsm_resolution: pixels per side of a light's RSM view
+    bool operator==(const VplSettings&) const = default;
+};
+
 // The Embree ground-truth renderer (src/reference/); see ReferenceRenderer.h.
 struct ReferenceSettings {
     int spp = 64;                 // reference.spp: paths per pixel, jittered over the pixel square
@@ -112,6 +123,7 @@ struct Settings {
     LineSpaceSettings lineSpace;
     VoxelSettings voxel;
     AtlasSettings atlas;
+    VplSettings vpl;
     ReferenceSettings reference;
     // Viewer.
     float frameBudgetMs = 100.0f;  // view.frame_budget_ms: while the camera moves, the render

@@ -20,3 +20,5 @@ static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drif
 static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 6,
         "VoxelUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::AtlasUniforms) == 4 * 16, "AtlasUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::GpuVpl) == 3 * 16, "GpuVpl std430 layout drifted");
+static_assert(sizeof(gi::shader::VplUniforms) == 2 * 16, "VplUniforms std140 layout drifted");

@@ -2,6 +2,7 @@
 
 #include "gi/atlas/AtlasGi.h"
 #include "gi/voxel/VoxelizationManager.h"
+#include "gi/vpl/VplGi.h"
 #include "gl/Limits.h"
 #include "gl/Shared.h"
 
@@ -112,6 +113,8 @@ bool FrameRenderer::setMode(GiMode mode, std::string& error) {
         technique = std::make_unique<voxel::VoxelizationManager>();
     } else if (mode == GiMode::Atlas) {
         technique = std::make_unique<atlas::AtlasGi>();
+    } else if (mode == GiMode::Vpl) {
+        technique = std::make_unique<vpl::VplGi>();
     } else if (mode != GiMode::Direct) {
         error = "the reference renderer is not a GPU mode";
         return false;
@@ -199,7 +202,8 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         mShadows.execute({*mScene}, profiler);
     }
     const bool needsOccupancy = voxelShadows() ||
-            (mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL);
+            (mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL) ||
+            (mMode == GiMode::Vpl && mSettings.vpl.visibility == VPL_VISIBILITY_CASCADE);
     if (!needsOccupancy) mOccupancy.reset();
     const std::optional<OccupancyVolume> occupancy =
             needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;

@@ -120,8 +120,9 @@ private:
     std::uint64_t mShadowGeometry = 0;   // GpuScene::geometryVersion() the maps were drawn for
     GiMode mMode = GiMode::Direct;
     std::unique_ptr<GiTechnique> mGi;
-    // Voxel occupancy for the atlas' visibility (atlas.visibility=voxel) and the voxel shadow
-    // cones (shadow.method=voxel): a scene-centred cascade, the same from every view.
+    // Voxel occupancy for the atlas' and the VPLs' visibility (atlas.visibility=voxel,
+    // vpl.visibility=cascade) and the voxel shadow cones (shadow.method=voxel): a
+    // scene-centred cascade, the same from every view.
     std::unique_ptr<voxel::VoxelizationManager> mOccupancy;
     gl::ShaderLibrary* mShaders = nullptr;
     const scene::Scene* mSceneDescription = nullptr;

@@ -12,6 +12,8 @@ constexpr ModeEntry kModes[] = {
         {GiMode::Direct, "direct", "direct", "direct light only, no GI", true},
         {GiMode::Voxel, "voxel", "voxel GI", "voxel cone tracing over a cascade of clipmaps", true},
         {GiMode::Atlas, "atlas", "atlas GI", "texture-atlas GI gathered between atlas texels", true},
+        {GiMode::Vpl, "vpl", "VPL GI",
+                "virtual point lights from reflective shadow maps, voxel visibility", true},
         {GiMode::Reference, "reference", "reference",
                 "the Embree path tracer (CPU ground truth, cached on disk)", false},
 };

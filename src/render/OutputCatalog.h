@@ -12,7 +12,7 @@
 
 namespace gi::render {
 
-enum class GiMode { Direct, Voxel, Atlas, Reference };
+enum class GiMode { Direct, Voxel, Atlas, Vpl, Reference };
 
 // What a frame shows: a radiance component, or a technique's debug view.
 enum class OutputComponent {
@@ -32,7 +32,8 @@ struct ModeEntry {
 using ModeMask = unsigned;
 constexpr ModeMask modeBit(GiMode mode) { return 1u << unsigned(mode); }
 constexpr ModeMask kAllModes = modeBit(GiMode::Direct) | modeBit(GiMode::Voxel) |
-                               modeBit(GiMode::Atlas) | modeBit(GiMode::Reference);
+                               modeBit(GiMode::Atlas) | modeBit(GiMode::Vpl) |
+                               modeBit(GiMode::Reference);
 
 struct OutputEntry {
     OutputComponent output;

@@ -219,6 +219,30 @@ TEST(RenderCommand, AtlasModeRenders) {
             "atlas.estimator", {dir + "/a.png"});
 }
 
+TEST(RenderCommand, VplModeRendersAndRefusesBadSettings) {
+    const std::string dir = makeTempDir("render-vpl");
+    const ProcessResult r = runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode",
+            "vpl", "--output", "indirect", "--width", "32", "--height", "32", "--set",
+            "vpl.count=64", "--set", "vpl.visibility=none"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    core::Image image;
+    std::string error;
+    ASSERT_TRUE(core::readPng(dir + "/a.png", image, error)) << error;
+    double sum = 0.0;
+    for (float value : image.rgb) sum += value;
+    EXPECT_GT(sum, 0.0);
+    fs::remove(dir + "/a.png");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", "vpl",
+                               "--set", "vpl.count=0"}),
+            "vpl.count", {dir + "/a.png"});
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", "vpl",
+                               "--set", "vpl.clamp=-0.01"}),
+            "vpl.clamp", {dir + "/a.png"});
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", "vpl",
+                               "--set", "vpl.visibility=svo"}),
+            "vpl.visibility", {dir + "/a.png"});
+}
+
 // The path tracer through the same command: an image of each component, the direct part
 // agreeing with the GPU's direct light, and a debug view refused as a GPU-only output.
 TEST(RenderCommand, ReferenceModeWritesEachComponent) {

@@ -46,7 +46,7 @@ TEST(CommandLine, ParsesRender) {
 TEST(CommandLine, ParsesEveryMode) {
     const std::pair<const char*, render::GiMode> modes[] = {{"direct", render::GiMode::Direct},
             {"voxel", render::GiMode::Voxel}, {"atlas", render::GiMode::Atlas},
-            {"reference", render::GiMode::Reference}};
+            {"vpl", render::GiMode::Vpl}, {"reference", render::GiMode::Reference}};
     ASSERT_EQ(std::size(modes), render::modeCatalog().size());
     for (const auto& [name, mode] : modes) {
         std::string error;

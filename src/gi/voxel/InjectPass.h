@@ -15,6 +15,7 @@
 #include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
+#include "scene/LightViews.h"
 #include "scene/Scene.h"
 
 #include <vector>
@@ -22,14 +23,7 @@
 namespace gi::voxel {
 
 // The views a light is injected through (exposed for tests).
-struct LightView {
-    int light = 0;                    // index into the light table
-    glm::mat4 viewProjection{1.0f};   // world -> clip
-    glm::vec3 axis{0.0f, 0.0f, -1.0f};   // unit forward axis of the view
-    bool orthographic = false;
-    float footprint = 0.0f;           // one pixel: sr on the axis (perspective) or m^2 (ortho)
-    bool areaLight = false;           // drawn without the area lights' own surfaces
-};
+using LightView = scene::LightView;
 
 // Views covering the scene inside the coarsest level, `resolution` pixels per side.
 [[nodiscard]] std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,

@@ -1,19 +1,21 @@
-// Visibility between a receiver and a sender through the voxel cascade's occupancy (SEEDS.md
-// section 2, "future work: visibility"; the cascade layout of voxel_cascade.glsl, coverage in
-// the albedo texture's alpha, each voxel's surface plane in the normal texture). The segment
-// is walked voxel by voxel through the finest level containing each point, each voxel once.
-// An occupied voxel whose surface is one plane (voxel_plane.glsl) blocks the segment only
-// where the segment crosses that plane inside the voxel, weighted by its coverage: a ray that
-// grazes a wall within a voxel of it, as rays between neighbouring receivers near a corner
-// do, passes. A voxel of several surfaces (edges, corners) and any voxel of a coarser level,
-// whose plane is an average of surfaces rather than one, block by their coverage alone. Both ends first leave their own
-// surface by one voxel along its normal, and the voxels they then start in do not block, so a
-// surface never occludes itself. Parts of the segment outside the cascade count as empty.
-#ifndef GI_ATLAS_VOXEL_VISIBILITY_GLSL
-#define GI_ATLAS_VOXEL_VISIBILITY_GLSL
+// Visibility between a receiver and a sender through the voxel cascade's occupancy: the atlas
+// gather's senders (SEEDS.md section 2, "future work: visibility") and gi/vpl's VPLs. The
+// cascade layout is voxel_cascade.glsl's, coverage in the albedo texture's alpha, each voxel's
+// surface plane in the normal texture. The segment is walked voxel by voxel through the finest
+// level containing each point, each voxel once. An occupied voxel whose surface is one plane
+// (voxel_plane.glsl) blocks the segment only where the segment crosses that plane inside the
+// voxel, weighted by its coverage: a ray that grazes a wall within a voxel of it, as rays
+// between neighbouring receivers near a corner do, passes. A voxel of several surfaces (edges,
+// corners) and any voxel of a coarser level, whose plane is an average of surfaces rather than
+// one, block by their coverage alone. Both ends first leave their own surface by one voxel
+// along its normal, and the voxels they then start in do not block, so a surface never
+// occludes itself (the segment shrunk at both ends, epsilon exits against self-hits). Parts of
+// the segment outside the cascade count as empty.
+#ifndef GI_VOXEL_VISIBILITY_GLSL
+#define GI_VOXEL_VISIBILITY_GLSL
 
-#include "../common/voxel_cascade.glsl"
-#include "../common/voxel_plane.glsl"
+#include "voxel_cascade.glsl"
+#include "voxel_plane.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;

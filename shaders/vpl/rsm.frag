@@ -1,0 +1,50 @@
+// Reflective shadow map (Dachsbacher and Stamminger 2005; SEEDS.md section 4): every pixel of
+// a light's view holds the surface the light sees there, its normal on the lit side and the
+// flux it reflects,
+//   phi = rho * E * A,   A = footprint * d^2 * cos^3(theta_axis) / cos(theta_surface)  (perspective)
+//                        A = footprint / cos(theta_surface)                            (orthographic),
+// A being the surface area the pixel covers and E this light's unshadowed irradiance (the
+// view's depth test is the shadowing). For a point light this is rho * I * (the pixel's solid
+// angle), so the pixels of six faces hold rho times the light's whole power. The flux
+// target's alpha keeps A: the lit area sets the clamp's scale (VplGi.h). Area lights are
+// seen from their centre, E being the emitters' exact irradiance (lighting.glsl): the texels'
+// flux sums to the reflected power as the direct pass lights it.
+#include "../common/lighting.glsl"
+#include "../common/material.glsl"
+#include "../common/vertex_data.glsl"
+
+layout(early_fragment_tests) in;
+
+layout(location = LOC_RSM_AXIS) uniform vec4 viewAxis;   // w = 1: orthographic
+layout(location = LOC_RSM_FOOTPRINT) uniform float pixelFootprint;
+layout(location = LOC_RSM_LIGHT) uniform int lightIndex;
+
+in VertexData { VERTEX_DATA_MEMBERS } vin;
+
+layout(location = 0) out vec4 outPosition;
+layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outFlux;
+
+void main() {
+    GpuMaterial m = materials[drawMaterial];
+    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+    if (materialCutOut(m, baseColor.a)) discard;
+    GpuLight light = lights[lightIndex];
+    vec3 n = normalize(vin.normal);
+    vec3 toLight;
+    float distance;
+    lightDirection(light, vin.position, toLight, distance);
+    // The side the light sees is the lit side, as the path tracer turns normals.
+    if (dot(n, toLight) < 0.0) n = -n;
+    vec3 e = lightIrradiance(light, vin.position, n);
+    // A grazing surface's area grows as its irradiance shrinks; their product stays finite.
+    float cosSurface = max(dot(n, toLight), 1e-3);
+    float area = pixelFootprint / cosSurface;
+    if (viewAxis.w == 0.0) {
+        float cosAxis = max(dot(-toLight, viewAxis.xyz), 0.0);
+        area *= distance * distance * cosAxis * cosAxis * cosAxis;
+    }
+    outPosition = vec4(vin.position, 1.0);
+    outNormal = vec4(n, 1.0);
+    outFlux = vec4(baseColor.rgb * e * area, area);
+}

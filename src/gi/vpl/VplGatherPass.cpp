@@ -1,0 +1,41 @@
+#include "gi/vpl/VplGatherPass.h"
+
+#include "gi/vpl/PixelDispatch.h"
+#include "gl/RenderTarget.h"
+#include "gl/Shared.h"
+
+namespace gi::vpl {
+
+bool VplGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mUnoccluded = shaders.build({"vpl/gather_none", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
+            {"VPL_VISIBILITY VPL_VISIBILITY_NONE"}}, error);
+    if (!mUnoccluded) return false;
+    mCascade = shaders.build({"vpl/gather_cascade", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
+            {"VPL_VISIBILITY VPL_VISIBILITY_CASCADE"}}, error);
+    return bool(mCascade);
+}
+
+void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
+    const glm::ivec2 size = in.gBuffer.size();
+    if (size != mSize) {
+        mSize = size;
+        mResult = gl::createTargetTexture({GL_RGBA16F, "vpl/gathered"}, size);
+    }
+    // The gather's own cost, apart from the filter: with cascade visibility most of it is the
+    // march (results-vpl.md compares it with vpl.visibility=none).
+    gl::GpuScope scope(profiler, in.occupancy ? "vpl/gather_cascade" : "vpl/gather");
+    const GLuint program = in.occupancy ? mCascade.id() : mUnoccluded.id();
+    glUseProgram(program);
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VPL, in.uniforms.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_VPLS, in.vpls.id());
+    glBindTextureUnit(BIND_TEX_VPL_POSITION, in.gBuffer.position().id());
+    glBindTextureUnit(BIND_TEX_VPL_NORMAL, in.gBuffer.normal().id());
+    if (in.occupancy) {
+        glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
+    }
+    dispatchOverPixels(mResult, size);
+}
+
+} // namespace gi::vpl

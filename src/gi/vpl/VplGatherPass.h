@@ -1,0 +1,33 @@
+// The VPL gather (shaders/vpl/gather.comp): the indirect irradiance each VPL sends the surface
+// of each pixel, through vpl.visibility, every VPL at every pixel or one interleaved subset
+// per pixel (VplUniforms.counts.y).
+// Inputs : the G-buffer, the VPLs, VplUniforms, the voxel occupancy (cascade visibility).
+// Outputs: result(), RGBA16F at the G-buffer's size: rgb = E_ind (W/m^2), a = view depth (m).
+#pragma once
+
+#include "gi/GiTechnique.h"
+#include "gi/vpl/VplGBufferPass.h"
+
+namespace gi::vpl {
+
+class VplGatherPass {
+public:
+    struct Inputs {
+        const VplGBufferPass& gBuffer;
+        const gl::Buffer& vpls;               // GpuVpl[]
+        const gl::Buffer& uniforms;           // VplUniforms
+        const OccupancyVolume* occupancy;     // non-null: cascade visibility
+    };
+
+    bool init(gl::ShaderLibrary& shaders, std::string& error);
+    void execute(const Inputs& in, gl::GpuProfiler& profiler);
+    const gl::Texture& result() const { return mResult; }
+
+private:
+    gl::ProgramRef mUnoccluded;   // vpl.visibility=none
+    gl::ProgramRef mCascade;      // vpl.visibility=cascade
+    gl::Texture mResult;
+    glm::ivec2 mSize{0};
+};
+
+} // namespace gi::vpl

@@ -1,0 +1,118 @@
+#include "gi/vpl/VplGi.h"
+
+#include "gi/vpl/VplSampler.h"
+#include "gl/Shared.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace gi::vpl {
+namespace {
+
+// The interleave filter keeps neighbours within this fraction of the centre's view depth and
+// with normals within about 25 degrees of its own.
+constexpr float kFilterDepthTolerance = 0.1f;
+constexpr float kFilterNormalCosine = 0.9f;
+
+// The surface area (m^2) the light that reaches most of the scene lights: each light's texels
+// cover every surface it sees once, so summing over lights would count shared surfaces twice.
+float largestLitArea(const std::vector<RsmTexel>& texels, std::size_t lightCount) {
+    std::vector<double> area(lightCount, 0.0);
+    for (const RsmTexel& texel : texels) {
+        if (texel.light >= 0 && std::size_t(texel.light) < lightCount) {
+            area[std::size_t(texel.light)] += texel.area;
+        }
+    }
+    return area.empty() ? 0.0f : float(*std::max_element(area.begin(), area.end()));
+}
+
+} // namespace
+
+bool VplGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) {
+    (void)scene;
+    mUniforms = gl::createBuffer(
+            sizeof(shader::VplUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "vpl/uniforms");
+    return mRsm.init(shaders, error) && mGBuffer.init(shaders, error) &&
+            mGather.init(shaders, error) && mFilter.init(shaders, error);
+}
+
+bool VplGi::configure(const Settings& settings, std::string& error) {
+    (void)error;   // the Settings table already refuses what the VPLs cannot honour
+    const VplSettings& s = settings.vpl;
+    if (s.count != mSettings.count || s.rsmResolution != mSettings.rsmResolution) {
+        mSource.valid = false;
+    }
+    if (s.visibility != mSettings.visibility) mWarnedNoOccupancy = false;
+    mSettings = s;
+    return true;
+}
+
+float VplGi::clampArea() const {
+    if (mSettings.clamp > 0.0f) return mSettings.clamp;
+    return kClampPerVplArea * mLitAreaPerVpl;
+}
+
+void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    const std::vector<scene::LightView> views =
+            scene::lightViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
+    const std::vector<RsmTexel> texels =
+            mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
+    std::vector<shader::GpuVpl> vpls = drawVpls(texels, mSettings.count);
+    mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(mSettings.count);
+    mVplCount = int(vpls.size());
+    // Keep a buffer of at least one VPL so the gather's binding is always valid.
+    if (vpls.empty()) vpls.push_back({});
+    mVpls = gl::createBuffer(vpls.size() * sizeof(shader::GpuVpl), vpls.data(), 0, "vpl/vpls");
+    mSource = {&in.scene, in.lights, in.scene.geometryVersion(), true};
+    std::fprintf(stderr, "vpl: %d VPLs from %zu lit RSM texels, %.4g m^2 per VPL, clamp B %.4g m^2\n",
+            mVplCount, texels.size(), double(mLitAreaPerVpl), double(clampArea()));
+}
+
+const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
+    if (mSettings.visibility != VPL_VISIBILITY_CASCADE) return nullptr;
+    if (!in.occupancy && !mWarnedNoOccupancy) {
+        std::fprintf(stderr, "vpl: vpl.visibility=cascade needs a voxel occupancy volume and "
+                             "this frame has none; VPLs are not occluded\n");
+        mWarnedNoOccupancy = true;
+    }
+    return in.occupancy;
+}
+
+void VplGi::writeUniforms(bool cascade) {
+    const int tile = mSettings.interleave ? VPL_TILE : 1;
+    shader::VplUniforms u{};
+    u.counts = glm::ivec4(mVplCount, tile,
+            cascade ? VPL_VISIBILITY_CASCADE : VPL_VISIBILITY_NONE, 0);
+    u.gather = glm::vec4(clampArea(), float(tile * tile), kFilterDepthTolerance,
+            kFilterNormalCosine);
+    glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
+}
+
+void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    const bool stale = !mSource.valid || mSource.scene != &in.scene ||
+            mSource.lights != in.lights || mSource.geometryVersion != in.scene.geometryVersion();
+    if (stale) resample(in, profiler);
+    const OccupancyVolume* occupancy = visibilityOccupancy(in);
+    writeUniforms(occupancy != nullptr);
+    mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
+    mGather.execute({mGBuffer, mVpls, mUniforms, occupancy}, profiler);
+    mFilter.execute({mGather.result(), mGBuffer, mUniforms}, profiler);
+    mHasOutput = mGBuffer.size().x > 0;
+}
+
+GiOutputs VplGi::outputs() const {
+    GiOutputs out;
+    if (!mHasOutput) return out;
+    out.indirect = &mFilter.result();
+    out.size = mGBuffer.size();
+    return out;
+}
+
+std::string VplGi::status() const {
+    const char* visibility = mSettings.visibility == VPL_VISIBILITY_CASCADE ? "cascade" : "none";
+    return "vpl " + std::to_string(mVplCount) + " VPLs, " +
+           (mSettings.interleave ? "4x4 tiles" : "every VPL per pixel") + ", visibility " +
+           visibility + ", B " + std::to_string(clampArea()) + " m^2";
+}
+
+} // namespace gi::vpl

@@ -1,0 +1,72 @@
+// Many-lights GI with virtual point lights (SEEDS.md section 4; Keller 1997, Dachsbacher and
+// Stamminger 2005, and the seed's interleaved sampling with voxel visibility). When lights or
+// geometry change:
+//   1. reflective shadow maps of every light (ReflectiveShadowMapPass through scene/LightViews.h),
+//   2. vpl.count VPLs drawn from their lit texels in proportion to flux (VplSampler);
+// every frame:
+//   3. the camera's G-buffer (VplGBufferPass),
+//   4. the gather (VplGatherPass): E_ind = sum phi/pi V cos cos / max(B, r^2), each pixel of a
+//      4x4 tile using one sixteenth of the VPLs, V through the voxel occupancy
+//      (vpl.visibility=cascade) or 1,
+//   5. the geometry-aware merge of the tiles (VplFilterPass) -> screen-space E_ind.
+// vpl.clamp = 0 takes B = kClampPerVplArea x the surface area one VPL stands for (the area the
+// most widely lit light reaches, over vpl.count): the 1/r^2 spike is cut where one VPL no
+// longer stands for the light around it, which scales with the scene and with the VPL count
+// (a fraction of the scene's diagonal clamped a 40 m atrium over 1.2 m and lost a fifth of
+// its indirect light); results-vpl.md measures what the clamp costs in energy.
+#pragma once
+
+#include "gi/GiTechnique.h"
+#include "gi/vpl/ReflectiveShadowMapPass.h"
+#include "gi/vpl/VplFilterPass.h"
+#include "gi/vpl/VplGBufferPass.h"
+#include "gi/vpl/VplGatherPass.h"
+
+namespace gi::vpl {
+
+class VplGi final : public GiTechnique {
+public:
+    // B over the lit area per VPL when vpl.clamp = 0.
+    static constexpr float kClampPerVplArea = 0.25f;
+
+    const char* name() const override { return "vpl"; }
+    bool init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) override;
+    bool configure(const Settings& settings, std::string& error) override;
+    void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
+    GiOutputs outputs() const override;
+    std::string status() const override;
+
+    // VPLs drawn at the last resampling (fewer than vpl.count only when nothing is lit).
+    int vplCount() const { return mVplCount; }
+    // B (m^2) of the gather's 1 / max(B, r^2).
+    float clampArea() const;
+
+private:
+    // What the VPLs were drawn from: another state draws them anew.
+    struct Source {
+        const scene::GpuScene* scene = nullptr;
+        std::vector<scene::Light> lights;
+        std::uint64_t geometryVersion = 0;
+        bool valid = false;
+    };
+
+    void resample(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
+    void writeUniforms(bool cascade);
+
+    VplSettings mSettings;
+    float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
+    Source mSource;
+    int mVplCount = 0;
+    bool mWarnedNoOccupancy = false;
+    bool mHasOutput = false;
+
+    gl::Buffer mVpls;
+    gl::Buffer mUniforms;
+    ReflectiveShadowMapPass mRsm;
+    VplGBufferPass mGBuffer;
+    VplGatherPass mGather;
+    VplFilterPass mFilter;
+};
+
+} // namespace gi::vpl

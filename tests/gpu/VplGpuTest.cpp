@@ -1,0 +1,83 @@
+// Many-lights GI (--mode vpl) scored against the path tracer (one bounce) on the Cornell box:
+// the radiometry (a VPL of flux phi sends phi/pi cos per steradian) shows in the energy ratio,
+// which a wrong factor of pi or of the interleaving's 16 moves far out of its bounds; the
+// interleaved gather must agree with every VPL at every pixel.
+#include "GpuTest.h"
+#include "TestScenes.h"
+
+#include "reference/ImageMetrics.h"
+#include "reference/ReferenceRenderer.h"
+
+#include <glad/gl.h>
+
+#include <cstdio>
+
+namespace gi::test {
+namespace {
+
+// Small enough for llvmpipe (a few seconds per render), large enough for 4x4 tiles.
+constexpr int kSize = 48;
+constexpr int kReferenceSpp = 64;
+
+class VplGpuTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        if (!mContext) return;
+        mScene = loadCornellBox();
+        mCamera = scene::cameraFromScene(mScene.cameras[0], 1.0f, mScene.bounds);
+        ReferenceSettings reference;
+        reference.spp = kReferenceSpp;
+        reference.bounces = 1;
+        mTruth = reference::renderReference(mScene, mCamera, kSize, kSize, reference);
+    }
+
+    reference::ImageErrors score(const Settings& settings) {
+        std::string error;
+        render::FrameRenderer renderer;
+        EXPECT_TRUE(renderer.init(mScene, settings, mShaders, error)) << error;
+        EXPECT_TRUE(renderer.setMode(render::GiMode::Vpl, error)) << error;
+        gl::GpuProfiler profiler;
+        renderer.render(mCamera, {kSize, kSize}, render::OutputComponent::Indirect, profiler);
+        profiler.flush();
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        return reference::measureImageError(renderer.readback(), mTruth.indirect,
+                mTruth.coverage);
+    }
+
+    static Settings vplSettings(bool interleave, int visibility) {
+        Settings settings;
+        settings.specular = 0.0f;   // the reference is Lambertian
+        settings.vpl.interleave = interleave;
+        settings.vpl.visibility = visibility;
+        return settings;
+    }
+
+    scene::Scene mScene;
+    scene::CameraView mCamera;
+    reference::ReferenceResult mTruth;
+    gl::ShaderLibrary mShaders;
+};
+
+TEST_F(VplGpuTest, CornellIndirectMatchesPathTracer) {
+    if (!mContext) GTEST_SKIP();
+    const reference::ImageErrors e = score(vplSettings(true, VPL_VISIBILITY_CASCADE));
+    std::printf("vpl cornell %dx%d: relative RMSE %.3f, energy %.3f (reference noise %.3f)\n",
+            kSize, kSize, e.relativeRmse, e.energyRatio, mTruth.noise.indirect);
+    EXPECT_GT(e.energyRatio, 0.85);
+    EXPECT_LT(e.energyRatio, 1.15);
+    EXPECT_LT(e.relativeRmse, 0.40);
+}
+
+TEST_F(VplGpuTest, InterleavingKeepsEveryVplsEnergy) {
+    if (!mContext) GTEST_SKIP();
+    const reference::ImageErrors tiled = score(vplSettings(true, VPL_VISIBILITY_NONE));
+    const reference::ImageErrors every = score(vplSettings(false, VPL_VISIBILITY_NONE));
+    std::printf("vpl cornell, no visibility: tiled energy %.3f rmse %.3f, every VPL energy %.3f "
+                "rmse %.3f\n",
+            tiled.energyRatio, tiled.relativeRmse, every.energyRatio, every.relativeRmse);
+    EXPECT_NEAR(tiled.energyRatio, every.energyRatio, 0.05 * every.energyRatio);
+}
+
+} // namespace
+} // namespace gi::test
