@@ -90,6 +90,12 @@
 #define BIND_TEX_ATLAS_SUMS_BACK    16
 #define BIND_TEX_ATLAS_LIT_BACK     17
 
+// The temporal filter of the indirect irradiance (render/TemporalFilter.h).
+#define BIND_TEX_TEMPORAL_CURRENT   18  // rgba16f, this frame's E_ind, a = view depth (m)
+#define BIND_TEX_TEMPORAL_HISTORY   19  // rgba16f, the filter's previous output, same layout
+#define BIND_TEX_TEMPORAL_HISTORY_NORMAL 20 // rgba16f, xyz = its surface normals, w = frames of
+                                        // history behind each texel
+
 // Image units (imageLoad/Store/atomics) of the voxel passes.
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
 #define BIND_IMG_VOXEL_NORMAL       1   // rgba8_snorm, running averages: xyz = normal, w = the
@@ -110,6 +116,9 @@
                                         // a = their area projected onto f / face area; then
                                         // the directional voxels (the filter target's unit:
                                         // no pass binds both)
+#define BIND_IMG_TEMPORAL_TARGET    0   // rgba16f, the filtered E_ind + view depth (no other
+                                        // pass runs with it)
+#define BIND_IMG_TEMPORAL_NORMAL    1   // rgba16f, the normals and history lengths it writes
 
 // Faces of an anisotropic voxel: VOXEL_FACE_POS_X is the voxel as seen from +x (by a cone
 // travelling towards -x), face f in x-slab f of the directional textures.
@@ -126,6 +135,7 @@
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
 #define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
+#define TEMPORAL_LOCAL_SIZE         8   // the temporal filter runs 8x8 texel groups
 
 #define ATLAS_SENDER_BLOCK          16  // texels per block of the sender table's row prefix sums
 #define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
@@ -185,6 +195,10 @@
 #define LOC_RSM_FOOTPRINT           18  // float, one RSM pixel: sr on the axis (perspective)
                                         // or m^2 (orthographic)
 #define LOC_RSM_LIGHT               19  // int, index into GpuLight[] of the light drawn
+#define LOC_TEMPORAL_PREVIOUS_VIEW_PROJECTION 20 // mat4, world -> clip of the previous frame
+#define LOC_TEMPORAL_PREVIOUS_VIEW  21  // mat4, world -> camera of the previous frame
+#define LOC_TEMPORAL_PARAMETERS     22  // vec4, x = blend weight of the new frame, y = 1 when
+                                        // a history exists, z = 1 to clamp the history
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]

@@ -95,6 +95,17 @@ struct VplSettings {
     bool operator==(const VplSettings&) const = default;
 };
 
+// Temporal reprojection of the GI technique's indirect irradiance (render/TemporalFilter.h).
+struct TemporalSettings {
+    bool filter = false;          // gi.temporal_filter: blend each frame's indirect irradiance
+                                  // with the previous frames' reprojected into this view
+    float blend = 0.2f;           // gi.temporal_blend: weight of the new frame once a pixel's
+                                  // history is long enough (1 = no history)
+    bool clamp = true;            // gi.temporal_clamp: history clamped to the new frame's
+                                  // neighbourhood range, which cuts trails behind moving objects
+    bool operator==(const TemporalSettings&) const = default;
+};
+
 // The Embree ground-truth renderer (src/reference/); see ReferenceRenderer.h.
 struct ReferenceSettings {
     int spp = 64;                 // reference.spp: paths per pixel, jittered over the pixel square
@@ -124,6 +135,7 @@ struct Settings {
     VoxelSettings voxel;
     AtlasSettings atlas;
     VplSettings vpl;
+    TemporalSettings temporal;
     ReferenceSettings reference;
     // Viewer.
     float frameBudgetMs = 100.0f;  // view.frame_budget_ms: while the camera moves, the render

@@ -45,7 +45,10 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     if (mLights != scene.lights) mScene->setLights(mLights);
     mFrameUniforms = gl::createBuffer(sizeof(shader::FrameUniforms), nullptr,
             GL_DYNAMIC_STORAGE_BIT, "frame/uniforms");
-    if (!mShadows.init(shaders, error) || !mForward.init(shaders, error)) return false;
+    if (!mShadows.init(shaders, error) || !mForward.init(shaders, error) ||
+            !mTemporal.init(shaders, error)) {
+        return false;
+    }
     mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
     return true;
 }
@@ -66,6 +69,7 @@ bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
     mRequested = requested;
     mPlan = std::move(plan);
     mSettings = settings;
+    mTemporal.reset();
     if (lightsChanged) {
         mLights = std::move(lights);
         mScene->setLights(mLights);
@@ -126,6 +130,7 @@ bool FrameRenderer::setMode(GiMode mode, std::string& error) {
     // Only the active technique keeps GPU memory.
     mGi = std::move(technique);
     mMode = mode;
+    mTemporal.reset();
     return true;
 }
 
@@ -135,6 +140,7 @@ void FrameRenderer::setLights(const std::vector<scene::Light>& lights) {
     mPlan = planFor(mRequested);
     mSettings = applyPlan(mRequested, mPlan);
     mLights = plannedLights(mAllLights, mPlan);
+    mTemporal.reset();
     mScene->setLights(mLights);
     mShadows.setLights(mLights, mScene->bounds(), mSettings.shadow);
 }
@@ -216,6 +222,13 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
                             occupancy ? &*occupancy : nullptr},
                 profiler);
         gi = mGi->outputs();
+    }
+    if (gi.indirect && !gi.debugImage && mSettings.temporal.filter) {
+        gi.indirect = &mTemporal.execute({*gi.indirect, gi.size, mFrameUniforms, camera,
+                                                  mSettings.temporal},
+                profiler);
+    } else {
+        mTemporal.reset();
     }
     if (gi.debugImage) {
         glCopyImageSubData(gi.debugImage->id(), GL_TEXTURE_2D, 0, 0, 0, 0, mTarget.color().id(),

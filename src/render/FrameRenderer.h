@@ -16,6 +16,7 @@
 #include "scene/GpuScene.h"
 #include "render/ShadowMethodReport.h"
 #include "render/ShadowPass.h"
+#include "render/TemporalFilter.h"
 #include "gi/GiTechnique.h"
 #include "gi/voxel/VoxelizationManager.h"
 #include "core/Image.h"
@@ -128,6 +129,7 @@ private:
     const scene::Scene* mSceneDescription = nullptr;
     const scene::Scene* mPosedScene = nullptr;   // the last setPose's scene (init's before)
     ForwardPass mForward;
+    TemporalFilter mTemporal;            // gi.temporal_filter
 };
 
 } // namespace gi::render

@@ -1,0 +1,56 @@
+#include "render/TemporalFilter.h"
+
+#include "gl/RenderTarget.h"
+#include "gl/Shared.h"
+
+namespace gi::render {
+
+bool TemporalFilter::init(gl::ShaderLibrary& shaders, std::string& error) {
+    mProgram = shaders.build({"render/temporal_filter",
+            {{GL_COMPUTE_SHADER, "render/temporal_filter.comp"}}, {}}, error);
+    return bool(mProgram);
+}
+
+const gl::Texture& TemporalFilter::execute(const Inputs& in, gl::GpuProfiler& profiler) {
+    if (in.size != mSize) {
+        mSize = in.size;
+        for (int i = 0; i < 2; ++i) {
+            mIrradiance[i] = gl::createTargetTexture(
+                    {GL_RGBA16F, "render/temporal_irradiance", true}, mSize);
+            mNormal[i] = gl::createTargetTexture({GL_RGBA16F, "render/temporal_normal", true}, mSize);
+        }
+        mHasHistory = false;
+    }
+    gl::GpuScope scope(profiler, "render/temporal_filter");
+    const int previous = 1 - mCurrent;
+    glUseProgram(mProgram.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
+    glBindTextureUnit(BIND_TEX_TEMPORAL_CURRENT, in.indirect.id());
+    glBindTextureUnit(BIND_TEX_TEMPORAL_HISTORY, mIrradiance[previous].id());
+    glBindTextureUnit(BIND_TEX_TEMPORAL_HISTORY_NORMAL, mNormal[previous].id());
+    glBindImageTexture(BIND_IMG_TEMPORAL_TARGET, mIrradiance[mCurrent].id(), 0, GL_FALSE, 0,
+            GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(BIND_IMG_TEMPORAL_NORMAL, mNormal[mCurrent].id(), 0, GL_FALSE, 0,
+            GL_WRITE_ONLY, GL_RGBA16F);
+    const GLuint program = mProgram.id();
+    glProgramUniformMatrix4fv(program, LOC_TEMPORAL_PREVIOUS_VIEW_PROJECTION, 1, GL_FALSE,
+            &mPreviousViewProjection[0][0]);
+    glProgramUniformMatrix4fv(program, LOC_TEMPORAL_PREVIOUS_VIEW, 1, GL_FALSE, &mPreviousView[0][0]);
+    const glm::vec4 parameters(in.settings.blend, mHasHistory ? 1.0f : 0.0f,
+            in.settings.clamp ? 1.0f : 0.0f, 0.0f);
+    glProgramUniform4fv(program, LOC_TEMPORAL_PARAMETERS, 1, &parameters[0]);
+    const glm::ivec2 groups = (mSize + TEMPORAL_LOCAL_SIZE - 1) / TEMPORAL_LOCAL_SIZE;
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+    // Consumers: the forward pass samples the result, the next frame's filter the history.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+
+    mPreviousViewProjection = in.camera.viewProjection();
+    mPreviousView = in.camera.view;
+    mHasHistory = true;
+    const gl::Texture& result = mIrradiance[mCurrent];
+    mCurrent = previous;
+    return result;
+}
+
+} // namespace gi::render
