@@ -3,6 +3,7 @@
 #include "app/BenchCommon.h"
 #include "app/SceneSetup.h"
 #include "app/SuiteCommand.h"
+#include "app/TemporalCommand.h"
 #include "bench/BenchReport.h"
 #include "bench/BenchRunner.h"
 #include "bench/BenchSweep.h"
@@ -153,6 +154,7 @@ bool plotPareto(const std::string& outDir) {
 
 int runBench(const Config& config) {
     if (config.suite) return runAccuracySuite(config);
+    if (config.temporal) return runTemporalBench(config);
     const auto start = std::chrono::steady_clock::now();
     const SweepPlan sweep{config.sweep,
             bench::RunOptions{2, config.sweep == bench::SweepSize::Full ? 7 : 3, 3}};

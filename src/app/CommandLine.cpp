@@ -258,6 +258,11 @@ bool applySuite(Config& config, const std::string& flag, const std::string& v, s
     return true;
 }
 
+bool applyTemporal(Config& config, const std::string&, const std::string&, std::string&) {
+    config.temporal = true;
+    return true;
+}
+
 bool applyOutDir(Config& config, const std::string&, const std::string& v, std::string&) {
     config.outDir = v;
     return true;
@@ -294,6 +299,7 @@ constexpr OptionSpec kOptions[] = {
         {"--quick", kBench, false, applyQuick},
         {"--sweep", kBench, true, applySweep},
         {"--suite", kBench, true, applySuite},
+        {"--temporal", kBench, false, applyTemporal},
         {"--out-dir", kBench, true, applyOutDir},
         {"--scene", kBench, true, applyScene},
 };

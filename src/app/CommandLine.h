@@ -77,6 +77,7 @@ struct Config {
     bench::SweepSize sweep = bench::SweepSize::Full;   // --sweep, --quick
     std::string outDir;
     std::optional<bench::SuiteSize> suite;             // --suite: the accuracy scoreboard
+    bool temporal = false;                             // --temporal: flicker and trails
 };
 
 [[nodiscard]] std::optional<Config> parseCommandLine(int argc, const char* const* argv,

@@ -135,7 +135,16 @@ std::string usage(Command command) {
                "Writes results-accuracy.md, accuracy.csv and images/accuracy_*.png to --out-dir\n"
                "(default docs). full: 128x128 (Sponza 192x108), 1024 spp references; quick (CI):\n"
                "64x64 (128x72), 256 spp, the converged atlas at 400 samples and not in Sponza.\n"
-               "--scene picks suite scenes by name.\n";
+               "--scene picks suite scenes by name.\n"
+               "\n"
+               "       voxatlas bench --temporal [--quick] [--out-dir DIR]\n"
+               "\n"
+               "Temporal stability: the mean relative frame-to-frame change of the indirect term\n"
+               "against the direct term's along slow camera paths (Sponza down the atrium at\n"
+               "10 cm per frame, the Cornell box sideways), in voxel and atlas mode with and\n"
+               "without gi.temporal_filter, and the trail the animated Cornell box's cube leaves.\n"
+               "Writes results-temporal.md and images/temporal_*.png to --out-dir (default\n"
+               "docs). --quick: the Cornell box alone, small images, few frames (CI).\n";
     default:
         return "usage: voxatlas [view] [SCENE] [--mode direct|voxel|atlas|vpl] [--width W --height H]\n"
                "        [--camera ...] [--light ...] [--frames N] [--screenshot F.png]\n"
@@ -145,6 +154,7 @@ std::string usage(Command command) {
                "       voxatlas render SCENE --out F.png ...   (voxatlas render --help)\n"
                "       voxatlas bench [--scene ...] [--sweep smoke|quick|full] [--out-dir DIR]\n"
                "       voxatlas bench --suite quick|full   (the accuracy scoreboard)\n"
+               "       voxatlas bench --temporal [--quick]   (flicker and trails)\n"
                "       voxatlas info SCENE [--set key=value ...]\n"
                "SCENE defaults to the Cornell box; --mode picks the GI mode the viewer starts in\n"
                "(keys 1-4 switch). Without a display, view renders a headless screenshot instead.\n"
