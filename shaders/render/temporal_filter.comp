@@ -89,19 +89,32 @@ vec4 reprojectedHistory(vec2 uv, float expectedDepth, vec3 normal, out vec3 irra
     return vec4(irradiance, frames / weightSum);
 }
 
-// The range of this frame's values over the 3x3 texels around `texel` on the same surface.
+// The range history may take: this frame's mean over the 3x3 texels around `texel` on the
+// same surface, +- kClipSigmas standard deviations (variance clipping, Salvi 2016), within
+// their minimum and maximum. Noise widens it; a change of the light itself falls outside.
+const float kClipSigmas = 1.0;
+
 void neighbourhoodRange(ivec2 texel, float depth, ivec2 size, out vec3 low, out vec3 high) {
-    low = vec3(1e30);
-    high = vec3(0.0);
+    vec3 least = vec3(1e30), most = vec3(0.0), sum = vec3(0.0), squares = vec3(0.0);
+    float count = 0.0;
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
             ivec2 p = clamp(texel + ivec2(x, y), ivec2(0), size - 1);
             vec4 t = texelFetch(current, p, 0);
             if (t.a <= 0.0 || abs(t.a - depth) > kDepthTolerance * depth) continue;
-            low = min(low, t.rgb);
-            high = max(high, t.rgb);
+            least = min(least, t.rgb);
+            most = max(most, t.rgb);
+            sum += t.rgb;
+            squares += t.rgb * t.rgb;
+            count += 1.0;
         }
     }
+    vec3 mean = sum / count;
+    vec3 sigma = sqrt(max(squares / count - mean * mean, vec3(0.0)));
+    // The centre itself always lies inside, so a still view's history is never clipped.
+    vec3 centre = texelFetch(current, texel, 0).rgb;
+    low = min(max(least, mean - kClipSigmas * sigma), centre);
+    high = max(min(most, mean + kClipSigmas * sigma), centre);
 }
 
 void main() {

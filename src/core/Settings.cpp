@@ -247,7 +247,7 @@ const std::vector<SettingSpec>& settingSpecs() {
         floatSetting("gi.temporal_blend", "weight of the new frame in the temporal filter", 0.01f,
                 1.0f, [](Settings& s) -> float& { return s.temporal.blend; }),
         boolSetting("gi.temporal_clamp",
-                "clamp the temporal filter's history to the new frame's 3x3 neighbourhood range",
+                "clip the temporal filter's history to the new frame's 3x3 mean +- one deviation",
                 [](Settings& s) -> bool& { return s.temporal.clamp; }),
         intSetting("reference.spp", "reference renderer: paths per pixel", 1, 65536,
                 [](Settings& s) -> int& { return s.reference.spp; }),
