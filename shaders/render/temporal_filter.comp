@@ -13,7 +13,7 @@ layout(local_size_x = TEMPORAL_LOCAL_SIZE, local_size_y = TEMPORAL_LOCAL_SIZE) i
 layout(binding = BIND_TEX_TEMPORAL_CURRENT) uniform sampler2D current;
 layout(binding = BIND_TEX_TEMPORAL_HISTORY) uniform sampler2D history;
 layout(binding = BIND_TEX_TEMPORAL_HISTORY_NORMAL) uniform sampler2D historyNormal;
-layout(binding = BIND_IMG_TEMPORAL_TARGET, rgba16f) writeonly uniform image2D target;
+layout(binding = BIND_IMG_TEMPORAL_TARGET, rgba32f) writeonly uniform image2D target;
 layout(binding = BIND_IMG_TEMPORAL_NORMAL, rgba16f) writeonly uniform image2D targetNormal;
 
 layout(location = LOC_TEMPORAL_PREVIOUS_VIEW_PROJECTION) uniform mat4 previousViewProjection;

@@ -15,8 +15,10 @@ const gl::Texture& TemporalFilter::execute(const Inputs& in, gl::GpuProfiler& pr
     if (in.size != mSize) {
         mSize = in.size;
         for (int i = 0; i < 2; ++i) {
+            // 32-bit: a half-float history stalls a few units of the last place (0.1 % each)
+            // away from a still image, where blend x difference rounds back to no change.
             mIrradiance[i] = gl::createTargetTexture(
-                    {GL_RGBA16F, "render/temporal_irradiance", true}, mSize);
+                    {GL_RGBA32F, "render/temporal_irradiance", true}, mSize);
             mNormal[i] = gl::createTargetTexture({GL_RGBA16F, "render/temporal_normal", true}, mSize);
         }
         mHasHistory = false;
@@ -29,7 +31,7 @@ const gl::Texture& TemporalFilter::execute(const Inputs& in, gl::GpuProfiler& pr
     glBindTextureUnit(BIND_TEX_TEMPORAL_HISTORY, mIrradiance[previous].id());
     glBindTextureUnit(BIND_TEX_TEMPORAL_HISTORY_NORMAL, mNormal[previous].id());
     glBindImageTexture(BIND_IMG_TEMPORAL_TARGET, mIrradiance[mCurrent].id(), 0, GL_FALSE, 0,
-            GL_WRITE_ONLY, GL_RGBA16F);
+            GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(BIND_IMG_TEMPORAL_NORMAL, mNormal[mCurrent].id(), 0, GL_FALSE, 0,
             GL_WRITE_ONLY, GL_RGBA16F);
     const GLuint program = mProgram.id();

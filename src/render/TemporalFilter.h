@@ -4,7 +4,7 @@
 // (and clamped to the new frame's neighbourhood with gi.temporal_clamp). It works on
 // GiOutputs::indirect, so every technique gets it; a still camera keeps the technique's image.
 // Inputs : GiOutputs::indirect (RGBA16F, rgb = E_ind W/m^2, a = view depth m), the frame UBO.
-// Outputs: a texture of the same size and meaning, for the forward pass.
+// Outputs: a texture of the same size and meaning (RGBA32F), for the forward pass.
 #pragma once
 
 #include "core/Settings.h"
