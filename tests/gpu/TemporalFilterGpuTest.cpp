@@ -1,0 +1,88 @@
+// The temporal reprojection filter (gi.temporal_filter, render/TemporalFilter.h): with a
+// still camera it must keep the technique's converged image (the exponential average of equal
+// frames is that frame: no bias), and along a camera path it must make the indirect term
+// change less from frame to frame than without it (bench/TemporalMetrics.h's measure).
+#include "GpuTest.h"
+#include "TestScenes.h"
+
+#include "bench/TemporalMetrics.h"
+#include "gl/GpuProfiler.h"
+#include "gl/ShaderLibrary.h"
+#include "render/FrameRenderer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <gtest/gtest.h>
+
+namespace gi::test {
+namespace {
+
+constexpr glm::ivec2 kSize{128, 72};
+
+class TemporalFilterGpuTest : public GpuTest {};
+
+Settings filterSettings(bool filter) {
+    Settings settings;
+    settings.specular = 0.0f;
+    settings.temporal.filter = filter;
+    return settings;
+}
+
+// The indirect term of `frames` frames, the camera moving by `step` each frame.
+std::vector<bench::CoveredFrame> renderPath(const scene::Scene& scene, render::GiMode mode,
+        const Settings& settings, glm::vec3 step, int frames) {
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    std::string error;
+    EXPECT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
+    EXPECT_TRUE(renderer.setMode(mode, error)) << error;
+    scene::CameraView camera = scene::cameraFromScene(scene.cameras[0],
+            float(kSize.x) / float(kSize.y), scene.bounds);
+    std::vector<bench::CoveredFrame> result;
+    gl::GpuProfiler profiler;
+    for (int i = 0; i < frames; ++i) {
+        renderer.render(camera, kSize, render::OutputComponent::Indirect, profiler);
+        result.push_back({renderer.readback(), renderer.readbackCoverage()});
+        camera.eye += step;
+        camera.view = camera.view * glm::translate(glm::mat4(1.0f), -step);
+    }
+    return result;
+}
+
+TEST_F(TemporalFilterGpuTest, StillCameraKeepsTheConvergedImage) {
+    const scene::Scene scene = loadTestScene("assets/cornell_box/cornell_box.gltf");
+    for (render::GiMode mode : {render::GiMode::Voxel, render::GiMode::Atlas}) {
+        // The atlas accumulates sample sets of 100 until 1024: still from frame 11 on, then
+        // 19 frames leave 0.8^19 = 1.4 % of the earlier frames' weight in the history.
+        const int frames = mode == render::GiMode::Atlas ? 30 : 5;
+        const auto plain = renderPath(scene, mode, filterSettings(false), glm::vec3(0.0f), frames);
+        const auto filtered = renderPath(scene, mode, filterSettings(true), glm::vec3(0.0f), frames);
+        ASSERT_EQ(filtered.size(), plain.size());
+        // Mean |plain - filtered| over their mean level (luminance, covered pixels).
+        const double difference = bench::relativeFrameChange(plain.back(), filtered.back());
+        std::printf("%s: still camera, filtered vs plain %.5f\n", render::giModeName(mode),
+                difference);
+        EXPECT_LT(difference, 1e-3) << render::giModeName(mode)
+                                    << ": the filter biases a still camera's image";
+    }
+}
+
+TEST_F(TemporalFilterGpuTest, ReducesTheFrameToFrameChangeAlongAPath) {
+    const scene::Scene scene = loadTestScene("assets/cornell_box/cornell_box.gltf");
+    const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+    const glm::vec3 right(camera.view[0][0], camera.view[1][0], camera.view[2][0]);
+    const glm::vec3 step = glm::normalize(right) * 0.005f;
+    for (render::GiMode mode : {render::GiMode::Voxel, render::GiMode::Atlas}) {
+        const double plain = bench::meanFrameChange(
+                renderPath(scene, mode, filterSettings(false), step, 6));
+        const double filtered = bench::meanFrameChange(
+                renderPath(scene, mode, filterSettings(true), step, 6));
+        std::printf("%s: frame-to-frame change %.4f plain, %.4f filtered\n",
+                render::giModeName(mode), plain, filtered);
+        EXPECT_GT(plain, 0.0);
+        EXPECT_LT(filtered, 0.9 * plain) << render::giModeName(mode);
+    }
+}
+
+} // namespace
+} // namespace gi::test
