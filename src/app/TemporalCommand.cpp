@@ -98,6 +98,8 @@ bool loadPaths(const Config& config, const TemporalForm& form,
     for (auto& path : paths) {
         path->result.path.scene = &path->scene;
         path->result.path.size = form.size;
+        // The atlas reaches its 1024 progressive samples in 11 frames of 100.
+        path->result.path.warmupFrames = 11;
     }
     return true;
 }
@@ -208,6 +210,7 @@ int runTemporalBench(const Config& config) {
     info.date = localTime();
     info.glRenderer = context->description();
     info.notes = notes;
+    info.blend = base.temporal.blend;
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<bench::TemporalPathResult> results;
     for (auto& loaded : paths) results.push_back(loaded->result);

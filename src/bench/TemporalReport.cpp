@@ -28,6 +28,9 @@ std::string number(double value, int digits = 2) {
     return text;
 }
 
+// The pictures leave out the unclipped filter's rows: they look like the clipped ones.
+bool pictured(const std::string& label) { return label.find("no clamp") == std::string::npos; }
+
 std::string pathImageName(const TemporalPath& path) { return "temporal_" + path.name + ".png"; }
 constexpr const char* kGhostImageName = "temporal_moving_cube.png";
 
@@ -54,7 +57,7 @@ SnapSplit snapSplit(const FlickerMeasurement& m) {
     return split;
 }
 
-void writeDefinitions(std::ostringstream& md) {
+void writeDefinitions(std::ostringstream& md, const TemporalRunInfo& info) {
     md << "## What is measured\n\n"
        << "- **Frame-to-frame change** of a radiance component along a camera path: for "
           "consecutive frames a, b, Σ|Y_b − Y_a| / Σ(Y_a + Y_b)/2 over the pixels that show "
@@ -66,6 +69,9 @@ void writeDefinitions(std::ostringstream& md) {
           "more (> 1) or less (< 1) the indirect term changes than the exactly computed direct "
           "light. Indirect light is smoother than direct light, so a stable method stays below "
           "1 (target on the Sponza walk: ≤ " << number(kRatioTarget, 1) << ").\n"
+       << "- **Filter**: `gi.temporal_filter=1` with `gi.temporal_blend=" << number(info.blend, 2)
+       << "` and history clipping (`gi.temporal_clamp=1`; *no clamp*: 0), in the renderer "
+          "after the technique (render/TemporalFilter.h).\n"
        << "- Every frame of a path is rendered in order by one renderer per configuration, as "
           "in the viewer: voxel caches, the atlas' progressive sums and the temporal filter's "
           "history persist.\n"
@@ -89,7 +95,10 @@ void writePath(std::ostringstream& md, const TemporalPathResult& result) {
     const TemporalPath& path = result.path;
     md << "## " << path.name << "\n\n"
        << path.description << " (`" << path.scenePath << "`, " << path.frames << " frames at "
-       << path.size.x << "×" << path.size.y << ").\n\n"
+       << path.size.x << "×" << path.size.y << ", after " << path.warmupFrames
+       << " frames at the start).";
+    if (path.name == "sponza_walk") md << " Target: ratio ≤ " << number(kRatioTarget, 1) << ".";
+    md << "\n\n"
        << "| configuration | indirect change | direct change | ratio | cascade snaps | change on "
           "snap frames | on the others | s |\n"
        << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -105,7 +114,7 @@ void writePath(std::ostringstream& md, const TemporalPathResult& result) {
     }
     md << "\n![" << path.name << "](images/" << pathImageName(path) << ")\n\n"
        << "Rows: the direct term, then the indirect term of each configuration in the table's "
-          "order; columns: frames";
+          "order (without the *no clamp* rows); columns: frames";
     for (int frame : stripFrames(path.frames)) md << " " << frame;
     md << ".\n\n";
 }
@@ -129,7 +138,8 @@ void writeGhost(std::ostringstream& md, const TemporalGhostResult& ghost) {
         md << "\n";
     }
     md << "\n![moving cube](images/" << kGhostImageName << ")\n\n"
-       << "Rows: the configurations in the table's order; columns: held frames 1–"
+       << "Rows: the configurations in the table's order (without the *no clamp* rows); "
+          "columns: held frames 1–"
        << s.holdFrames << ", the fresh render, and |history − fresh| × 10 of the last held "
           "frame.\n\n";
 }
@@ -141,7 +151,9 @@ bool writeImages(const fs::path& directory, const std::vector<TemporalPathResult
     fs::create_directories(images, ec);
     for (const TemporalPathResult& result : paths) {
         std::vector<GridRow> rows{{result.directStrip, 0.0f}};
-        for (const FlickerMeasurement& m : result.measurements) rows.push_back({m.strip, 0.0f});
+        for (const FlickerMeasurement& m : result.measurements) {
+            if (pictured(m.label)) rows.push_back({m.strip, 0.0f});
+        }
         if (!core::writePng((images / pathImageName(result.path)).string(), composeGrid(rows), error)) {
             return false;
         }
@@ -149,6 +161,7 @@ bool writeImages(const fs::path& directory, const std::vector<TemporalPathResult
     if (ghost.measurements.empty()) return true;
     std::vector<GridRow> rows;
     for (const GhostMeasurement& m : ghost.measurements) {
+        if (!pictured(m.label)) continue;
         // One exposure for the row, the fresh render's, so the difference panel is comparable.
         const float exposure = m.strip.size() >= 2 ? autoExposureOf(m.strip[m.strip.size() - 2]) : 0.0f;
         rows.push_back({m.strip, exposure});
@@ -165,7 +178,7 @@ std::string temporalMarkdown(const std::vector<TemporalPathResult>& paths,
        << "Written by `" << info.command << "` (" << info.form << " form) on " << info.date
        << ", " << info.glRenderer << ", in " << number(info.seconds / 60.0, 1) << " min.\n\n";
     for (const std::string& note : info.notes) md << "> " << note << "\n\n";
-    writeDefinitions(md);
+    writeDefinitions(md, info);
     for (const TemporalPathResult& result : paths) writePath(md, result);
     if (!ghost.measurements.empty()) writeGhost(md, ghost);
     return md.str();

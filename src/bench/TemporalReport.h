@@ -24,6 +24,7 @@ struct TemporalRunInfo {
     std::string form;          // "quick" or "full"
     std::string date, glRenderer;
     double seconds = 0.0;
+    float blend = 0.0f;        // gi.temporal_blend of the filtered configurations
     std::vector<std::string> notes;   // e.g. Sponza left out and why
 };
 

@@ -6,8 +6,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 namespace gi::bench {
 namespace {
@@ -45,6 +47,37 @@ std::optional<glm::vec3> cascadeCentre(const render::FrameRenderer& renderer) {
     return voxel->volume().center();
 }
 
+// What the moving-cube run rendered: see measureGhosting.
+struct GhostFrames {
+    CoveredFrame freshStart, lastMoving;
+    std::vector<CoveredFrame> held, fresh;   // fresh[k]: the fresh render matching held[k-1]
+};
+
+void scoreGhost(const GhostSetup& setup, const GhostFrames& frames, GhostMeasurement& result) {
+    const CoveredFrame& freshEnd = frames.fresh.back();
+    const auto blocks = [&](const CoveredFrame& frame) { return blockMean(frame, setup.block); };
+    const CoveredFrame freshEndBlocks = blocks(freshEnd);
+    const int floorRow = int(setup.floorRows * float(freshEndBlocks.image.height));
+    result.floorLight = meanLuminanceOfRows(freshEndBlocks, floorRow);
+    const std::vector<bool> region = changedPixels(blocks(frames.freshStart), freshEndBlocks,
+            setup.regionThreshold * result.floorLight);
+    int inRegion = 0, coveredBlocks = 0;
+    for (std::size_t p = 0; p < region.size(); ++p) {
+        inRegion += region[p] ? 1 : 0;
+        coveredBlocks += freshEndBlocks.coverage[p] > 0.5f ? 1 : 0;
+    }
+    result.regionFraction = coveredBlocks > 0 ? double(inRegion) / coveredBlocks : 0.0;
+    result.trailMoving = trailBrightness(blocks(frames.lastMoving), blocks(frames.fresh.front()),
+            region, result.floorLight);
+    for (std::size_t k = 0; k < frames.held.size(); ++k) {
+        result.trail.push_back(trailBrightness(blocks(frames.held[k]), blocks(frames.fresh[k + 1]),
+                region, result.floorLight));
+        result.strip.push_back(frames.held[k].image);
+    }
+    result.strip.push_back(freshEnd.image);
+    result.strip.push_back(differenceImage(frames.held.back().image, freshEnd.image, 10.0f));
+}
+
 } // namespace
 
 std::vector<int> stripFrames(int frames) {
@@ -78,6 +111,9 @@ bool measureFlicker(const TemporalPath& path, const TemporalConfiguration& confi
     result.path = path.name;
     result.label = configuration.label;
     const std::vector<int> strip = stripFrames(path.frames);
+    for (int i = 0; i < path.warmupFrames; ++i) {
+        renderFrame(*renderer, path.start, path.size, render::OutputComponent::Indirect);
+    }
     CoveredFrame previous;
     std::optional<glm::vec3> previousCentre;
     double sum = 0.0;
@@ -145,28 +181,8 @@ bool measureGhosting(const GhostSetup& setup, const TemporalConfiguration& confi
         freshFrames.push_back(renderFrame(*fresh, setup.camera, setup.size, indirect));
     }
 
-    const CoveredFrame& freshEnd = freshFrames.back();
-    const auto blocks = [&](const CoveredFrame& frame) { return blockMean(frame, setup.block); };
-    const CoveredFrame freshEndBlocks = blocks(freshEnd);
-    const int floorRow = int(setup.floorRows * float(freshEndBlocks.image.height));
-    result.floorLight = meanLuminanceOfRows(freshEndBlocks, floorRow);
-    const std::vector<bool> region = changedPixels(blocks(freshStart), freshEndBlocks,
-            setup.regionThreshold * result.floorLight);
-    int inRegion = 0, coveredBlocks = 0;
-    for (std::size_t p = 0; p < region.size(); ++p) {
-        inRegion += region[p] ? 1 : 0;
-        coveredBlocks += freshEndBlocks.coverage[p] > 0.5f ? 1 : 0;
-    }
-    result.regionFraction = coveredBlocks > 0 ? double(inRegion) / coveredBlocks : 0.0;
-    result.trailMoving = trailBrightness(blocks(lastMoving), blocks(freshFrames.front()), region,
-            result.floorLight);
-    for (int k = 0; k < setup.holdFrames; ++k) {
-        result.trail.push_back(trailBrightness(blocks(held[std::size_t(k)]),
-                blocks(freshFrames[std::size_t(k) + 1]), region, result.floorLight));
-        result.strip.push_back(held[std::size_t(k)].image);
-    }
-    result.strip.push_back(freshEnd.image);
-    result.strip.push_back(differenceImage(held.back().image, freshEnd.image, 10.0f));
+    scoreGhost(setup, {freshStart, std::move(lastMoving), std::move(held), std::move(freshFrames)},
+            result);
     return true;
 }
 

@@ -27,6 +27,9 @@ struct TemporalPath {
     scene::CameraView start;
     glm::vec3 step{0.0f};              // metres per frame
     int frames = 0;
+    // Frames rendered at the start before the path, so progressive methods start converged
+    // (as a viewer's user starts walking from a settled view) and convergence is not flicker.
+    int warmupFrames = 0;
     glm::ivec2 size{0};
 };
 
