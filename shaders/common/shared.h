@@ -92,7 +92,7 @@
 
 // The temporal filter of the indirect irradiance (render/TemporalFilter.h).
 #define BIND_TEX_TEMPORAL_CURRENT   18  // rgba16f, this frame's E_ind, a = view depth (m)
-#define BIND_TEX_TEMPORAL_HISTORY   19  // rgba16f, the filter's previous output, same layout
+#define BIND_TEX_TEMPORAL_HISTORY   19  // rgba32f, the filter's previous output, same layout
 #define BIND_TEX_TEMPORAL_HISTORY_NORMAL 20 // rgba16f, xyz = its surface normals, w = frames of
                                         // history behind each texel
 
@@ -116,7 +116,7 @@
                                         // a = their area projected onto f / face area; then
                                         // the directional voxels (the filter target's unit:
                                         // no pass binds both)
-#define BIND_IMG_TEMPORAL_TARGET    0   // rgba16f, the filtered E_ind + view depth (no other
+#define BIND_IMG_TEMPORAL_TARGET    0   // rgba32f, the filtered E_ind + view depth (no other
                                         // pass runs with it)
 #define BIND_IMG_TEMPORAL_NORMAL    1   // rgba16f, the normals and history lengths it writes
 
