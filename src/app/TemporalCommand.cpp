@@ -69,7 +69,8 @@ bool loadPaths(const Config& config, const TemporalForm& form,
         } else {
             auto loaded = std::make_unique<LoadedPath>();
             bench::TemporalPath& p = loaded->result.path;
-            if (!loadPath(config, sponza, kSponzaCamera, form.size, loaded->scene, p.start, error)) {
+            if (!loadPath(config, sponza, kSponzaCamera, form.size, loaded->scene, p.start,
+                        error)) {
                 return false;
             }
             p.name = "sponza_walk";
@@ -137,7 +138,8 @@ bool runPaths(std::vector<std::unique_ptr<LoadedPath>>& paths,
             }
             std::printf("%s, %s: indirect change %.2f %%, direct %.2f %%, ratio %.2f (%.1f s)\n",
                     result.path.name.c_str(), c.label.c_str(), 100.0 * m.indirectChange,
-                    100.0 * m.directChange, m.directChange > 0 ? m.indirectChange / m.directChange : 0.0,
+                    100.0 * m.directChange,
+                    m.directChange > 0 ? m.indirectChange / m.directChange : 0.0,
                     m.seconds);
             std::fflush(stdout);
             result.measurements.push_back(std::move(m));
@@ -182,7 +184,9 @@ int runTemporalBench(const Config& config) {
     const std::string outDir = config.outDir.empty() ? "docs" : config.outDir;
     std::error_code ec;
     fs::create_directories(outDir, ec);
-    if (ec || !fs::is_directory(outDir)) return fail(2, "--out-dir " + outDir + ": cannot create it");
+    if (ec || !fs::is_directory(outDir)) {
+        return fail(2, "--out-dir " + outDir + ": cannot create it");
+    }
 
     Settings base = config.settings;
     base.specular = 0.0f;

@@ -28,18 +28,21 @@ core::Image composeGrid(const std::vector<GridRow>& rows) {
     }
     if (columns == 0 || width == 0 || height == 0) return {};
     const int rowCount = int(rows.size());
-    core::Image grid(columns * width + (columns - 1) * kGap, rowCount * height + (rowCount - 1) * kGap);
+    core::Image grid(columns * width + (columns - 1) * kGap,
+            rowCount * height + (rowCount - 1) * kGap);
     for (int y = 0; y < grid.height; ++y) {
         for (int x = 0; x < grid.width; ++x) grid.set(x, y, kGapColour);
     }
     for (int r = 0; r < rowCount; ++r) {
         const GridRow& row = rows[std::size_t(r)];
         if (row.panels.empty()) continue;
-        const float exposure = row.exposure > 0.0f ? row.exposure : autoExposureOf(row.panels.front());
+        const float exposure =
+                row.exposure > 0.0f ? row.exposure : autoExposureOf(row.panels.front());
         for (int c = 0; c < int(row.panels.size()); ++c) {
             const core::Image& panel = row.panels[std::size_t(c)];
             if (panel.width != width || panel.height != height) continue;
-            const core::Image shown = core::applyToneMapping(panel, exposure, core::ToneCurve::Filmic);
+            const core::Image shown =
+                    core::applyToneMapping(panel, exposure, core::ToneCurve::Filmic);
             const int left = c * (width + kGap), top = r * (height + kGap);
             for (int y = 0; y < height; ++y) {
                 for (int x = 0; x < width; ++x) grid.set(left + x, top + y, shown.at(x, y));

@@ -43,7 +43,9 @@ double relativeFrameChange(const CoveredFrame& a, const CoveredFrame& b) {
 double meanFrameChange(const std::vector<CoveredFrame>& frames) {
     if (frames.size() < 2) return 0.0;
     double sum = 0.0;
-    for (std::size_t i = 1; i < frames.size(); ++i) sum += relativeFrameChange(frames[i - 1], frames[i]);
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+        sum += relativeFrameChange(frames[i - 1], frames[i]);
+    }
     return sum / double(frames.size() - 1);
 }
 
@@ -73,7 +75,8 @@ std::vector<bool> changedPixels(const CoveredFrame& a, const CoveredFrame& b, do
 
 double trailBrightness(const CoveredFrame& history, const CoveredFrame& fresh,
         const std::vector<bool>& region, double floorLight) {
-    if (!sameShape(history, fresh) || region.size() != pixelCount(fresh.image) || floorLight <= 0.0) {
+    if (!sameShape(history, fresh) || region.size() != pixelCount(fresh.image) ||
+            floorLight <= 0.0) {
         return 0.0;
     }
     double sum = 0.0;
@@ -98,7 +101,9 @@ CoveredFrame blockMean(const CoveredFrame& frame, int factor) {
     }
     const core::Image averaged = core::boxDownsample(coverage, factor);
     result.coverage.resize(pixelCount(averaged));
-    for (std::size_t p = 0; p < result.coverage.size(); ++p) result.coverage[p] = averaged.rgb[p * 3];
+    for (std::size_t p = 0; p < result.coverage.size(); ++p) {
+        result.coverage[p] = averaged.rgb[p * 3];
+    }
     return result;
 }
 

@@ -154,7 +154,8 @@ bool writeImages(const fs::path& directory, const std::vector<TemporalPathResult
         for (const FlickerMeasurement& m : result.measurements) {
             if (pictured(m.label)) rows.push_back({m.strip, 0.0f});
         }
-        if (!core::writePng((images / pathImageName(result.path)).string(), composeGrid(rows), error)) {
+        const std::string file = (images / pathImageName(result.path)).string();
+        if (!core::writePng(file, composeGrid(rows), error)) {
             return false;
         }
     }
@@ -163,7 +164,8 @@ bool writeImages(const fs::path& directory, const std::vector<TemporalPathResult
     for (const GhostMeasurement& m : ghost.measurements) {
         if (!pictured(m.label)) continue;
         // One exposure for the row, the fresh render's, so the difference panel is comparable.
-        const float exposure = m.strip.size() >= 2 ? autoExposureOf(m.strip[m.strip.size() - 2]) : 0.0f;
+        const float exposure =
+                m.strip.size() >= 2 ? autoExposureOf(m.strip[m.strip.size() - 2]) : 0.0f;
         rows.push_back({m.strip, exposure});
     }
     return core::writePng((images / kGhostImageName).string(), composeGrid(rows), error);

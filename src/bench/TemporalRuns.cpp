@@ -126,13 +126,16 @@ bool measureFlicker(const TemporalPath& path, const TemporalConfiguration& confi
             sum += result.perFrame.back();
             result.cascadeMoved.push_back(centre && previousCentre && *centre != *previousCentre);
         }
-        if (std::find(strip.begin(), strip.end(), i) != strip.end()) result.strip.push_back(frame.image);
+        if (std::find(strip.begin(), strip.end(), i) != strip.end()) {
+            result.strip.push_back(frame.image);
+        }
         previous = std::move(frame);
         previousCentre = centre;
     }
     result.indirectChange = result.perFrame.empty() ? 0.0 : sum / double(result.perFrame.size());
     result.directChange = meanFrameChange(direct);
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;
 }
 
@@ -159,7 +162,9 @@ bool measureGhosting(const GhostSetup& setup, const TemporalConfiguration& confi
 
     auto renderer = makeRenderer(scene, configuration.mode, configuration.settings, shaders, error);
     if (!renderer) return false;
-    for (int i = 0; i <= setup.settleFrames; ++i) renderFrame(*renderer, setup.camera, setup.size, indirect);
+    for (int i = 0; i <= setup.settleFrames; ++i) {
+        renderFrame(*renderer, setup.camera, setup.size, indirect);
+    }
     CoveredFrame lastMoving;
     for (int i = 1; i <= setup.movingFrames; ++i) {
         scene::poseScene(scene, setup.startTime + setup.stepSeconds * float(i));

@@ -19,7 +19,8 @@ const gl::Texture& TemporalFilter::execute(const Inputs& in, gl::GpuProfiler& pr
             // away from a still image, where blend x difference rounds back to no change.
             mIrradiance[i] = gl::createTargetTexture(
                     {GL_RGBA32F, "render/temporal_irradiance", true}, mSize);
-            mNormal[i] = gl::createTargetTexture({GL_RGBA16F, "render/temporal_normal", true}, mSize);
+            mNormal[i] =
+                    gl::createTargetTexture({GL_RGBA16F, "render/temporal_normal", true}, mSize);
         }
         mHasHistory = false;
     }
@@ -37,7 +38,8 @@ const gl::Texture& TemporalFilter::execute(const Inputs& in, gl::GpuProfiler& pr
     const GLuint program = mProgram.id();
     glProgramUniformMatrix4fv(program, LOC_TEMPORAL_PREVIOUS_VIEW_PROJECTION, 1, GL_FALSE,
             &mPreviousViewProjection[0][0]);
-    glProgramUniformMatrix4fv(program, LOC_TEMPORAL_PREVIOUS_VIEW, 1, GL_FALSE, &mPreviousView[0][0]);
+    glProgramUniformMatrix4fv(program, LOC_TEMPORAL_PREVIOUS_VIEW, 1, GL_FALSE,
+            &mPreviousView[0][0]);
     const glm::vec4 parameters(in.settings.blend, mHasHistory ? 1.0f : 0.0f,
             in.settings.clamp ? 1.0f : 0.0f, 0.0f);
     glProgramUniform4fv(program, LOC_TEMPORAL_PARAMETERS, 1, &parameters[0]);

@@ -56,7 +56,8 @@ TEST_F(TemporalFilterGpuTest, StillCameraKeepsTheConvergedImage) {
         // 19 frames leave 0.8^19 = 1.4 % of the earlier frames' weight in the history.
         const int frames = mode == render::GiMode::Atlas ? 30 : 5;
         const auto plain = renderPath(scene, mode, filterSettings(false), glm::vec3(0.0f), frames);
-        const auto filtered = renderPath(scene, mode, filterSettings(true), glm::vec3(0.0f), frames);
+        const auto filtered =
+                renderPath(scene, mode, filterSettings(true), glm::vec3(0.0f), frames);
         ASSERT_EQ(filtered.size(), plain.size());
         // Mean |plain - filtered| over their mean level (luminance, covered pixels).
         const double difference = bench::relativeFrameChange(plain.back(), filtered.back());

@@ -7,7 +7,8 @@ namespace gi::bench {
 namespace {
 
 CoveredFrame uniformFrame(float value, int width = 4, int height = 2) {
-    CoveredFrame frame{core::Image(width, height), std::vector<float>(std::size_t(width * height), 1.0f)};
+    CoveredFrame frame{core::Image(width, height),
+            std::vector<float>(std::size_t(width * height), 1.0f)};
     for (float& v : frame.image.rgb) v = value;
     return frame;
 }
