@@ -30,8 +30,8 @@ void AtlasDilatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glDisable(GL_BLEND);
     glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sums.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_SUMS_BACK, in.textures.sumsBack.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sumsOf(in.bounce).id());
+    glBindTextureUnit(BIND_TEX_ATLAS_SUMS_BACK, in.textures.sumsBackOf(in.bounce).id());
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -16,6 +16,7 @@ public:
     struct Inputs {
         const AtlasTextures& textures;     // sums (RGBA32F, rgb = gather sums, a = written)
         const gl::Buffer& atlasUniforms;   // AtlasUniforms, std140: R, 1 / samples, radius
+        int bounce = 0;                    // the sums read: textures.sumsOf(bounce)
     };
     struct Outputs {
         const AtlasTextures& textures;     // lit, the layer attach() bound
