@@ -6,6 +6,7 @@
 // Outputs: AtlasTextures senders and sendersBack.
 #pragma once
 
+#include "gi/atlas/AtlasTexelPass.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
@@ -25,9 +26,8 @@ public:
     void execute(const Inputs& in, gl::GpuProfiler& profiler);
 
 private:
-    gl::ProgramRef mProgram;
+    AtlasTexelPass mPass;
     gl::Framebuffer mFramebuffer;
-    gl::VertexArray mEmpty;
     int mResolution = 0;
 };
 
