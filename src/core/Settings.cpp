@@ -147,7 +147,7 @@ const std::vector<SettingSpec>& settingSpecs() {
         intSetting("gi.bounces",
                 "bounces of indirect light in voxel and atlas GI: 1 = light reflected once (the "
                 "thesis), each more gathers the last bounce's light again",
-                1, 3, [](Settings& s) -> int& { return s.giBounces; }),
+                1, 16, [](Settings& s) -> int& { return s.giBounces; }),
         intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
                 [](Settings& s) -> int& { return s.voxel.resolution; }),
         intSetting("voxel.cascades",
