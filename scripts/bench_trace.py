@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Where the cone-trace pass' time goes, and what a change to it saves: `voxatlas render
 --timings` of the Cornell box from inside (every pixel traces, 1280x720 unless --size), with
-variants of shaders/voxel/cone_trace.frag that switch one part off, timed in interleaved
+variants of shaders/voxel/cone_tracing.glsl that switch one part off, timed in interleaved
 rounds; prints each variant's trace-pass time as a ratio to the unchanged shader's.
 
 The variants are text substitutions in a copy of shaders/ (VOXATLAS_SHADER_DIR); a
@@ -24,12 +24,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import interleaved as il  # noqa: E402
 import measure_common as common  # noqa: E402
 
-TRACE = os.path.join("voxel", "cone_trace.frag")
+TRACE = os.path.join("voxel", "cone_tracing.glsl")
+TRACE_MAIN = os.path.join("voxel", "cone_trace.frag")
 CONE_CALL = "traceCone(origin, n, maxDistance);"
 RING_LOOP = "for (int i = 0; i < 8; ++i) {"
 LIGHT_CALL = "reflected = coarsestLight("
 
-# name -> (what it switches off, [(old, new), ...] in cone_trace.frag)
+# name -> (what it switches off, [(old, new), ...] in cone_tracing.glsl)
 PROFILE = {
     "no cones": ("every cone (rasterisation, material and set-up remain)", [
         ("vec3 e = voxel.traceWeights.x * " + CONE_CALL, "vec3 e = vec3(origin * 1e-9);"),
@@ -52,7 +53,9 @@ COUNTS = [
     (LIGHT_CALL, "++gHits; " + LIGHT_CALL),
     ("VoxelSample s = readLevel(p, level);", "VoxelSample s = readLevel(p, level); "
      "++gSteps; gFetches += 3;"),
-    ("outIndirect = vec4(PI * e, viewDepth);",
+    (TRACE_MAIN,
+     "outIndirect = vec4(coneIrradiance(origin, n, ringTurn, voxel.trace.y), viewDepth);",
+     "vec3 e = coneIrradiance(origin, n, ringTurn, voxel.trace.y); "
      "outIndirect = vec4(float(gSteps) / 9.0, float(gFetches) / 9.0, float(gHits) / 9.0, "
      "viewDepth + 0.0 * e.x);"),
     # The counters reach the image unscaled by the surface's albedo.

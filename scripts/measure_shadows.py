@@ -72,8 +72,11 @@ def accuracy(names, lines):
     lines += ["", "Error images `docs/images/shadows_error_<method>.png`: red where the method is "
               "darker than the path tracer (over-occlusion), blue where it is brighter, full "
               "colour at 50% of the reference; grey where the surface is not compared. The line "
-              "space's red seams along the blocks' silhouettes are its approximation (a ray "
-              "through a non-empty shaft one level above the leaves counts as blocked).", ""]
+              "space's red bands along the tops of the walls, where rays to the panel pass "
+              "close to the ceiling, and at the edge of the tall block's shadow are its "
+              "approximation: a ray through a non-empty shaft one level above the leaves counts "
+              "as blocked. The voxel cones darken the same bands more and blur the shadows "
+              "(red and blue beside each other).", ""]
 
 
 def error_image(image, reference, mask, path):
@@ -103,9 +106,10 @@ PAPER = [(69_000, "Bunny 69k", 95.3 / 69.9), (871_000, "Dragon 871k", 22.4 / 33.
 
 
 def paper_ratio(triangles):
+    """The paper's ratio for a model within 1.5x of this size, else none."""
     count = int(triangles.replace(",", ""))
     size, name, ratio = min(PAPER, key=lambda p: abs(p[0] - count))
-    return f"x{ratio:.2f} ({name})"
+    return f"x{ratio:.2f} ({name})" if max(size, count) / min(size, count) <= 1.5 else "-"
 
 
 def speed(names, scenes, rounds, lines):

@@ -108,6 +108,9 @@
 #define BIND_IMG_VOXEL_LOCK         4   // r32ui, bit 0 = spinlock, bits 1..31 = fragment count
 #define BIND_IMG_FILTER_TARGET      5   // rgba16f, filtered E_ind + view depth
 #define BIND_IMG_VOXEL_PYRAMID_SOURCE 6 // rgba16f, pyramid mip m-1 read while mip m is built
+#define BIND_IMG_VOXEL_GATHERED     6   // rgba16f, gi.bounces > 1: the indirect E x coverage the
+                                        // voxel's own cones gathered (the pyramid source's
+                                        // unit: no pass binds both)
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
 #define BIND_IMG_VPL_TARGET         5   // rgba16f, the VPL gather's or filter's output
 #define BIND_IMG_VOXEL_DIRECTIONAL  5   // rgba16f (6v, v, v*l), voxel.anisotropic: while

@@ -144,6 +144,10 @@ const std::vector<SettingSpec>& settingSpecs() {
         intSetting("linespace.depth",
                 "N-tree levels below the root, the last the leaf voxels (shadow.method=linespace)",
                 2, 4, [](Settings& s) -> int& { return s.lineSpace.depth; }),
+        intSetting("gi.bounces",
+                "bounces of indirect light in voxel and atlas GI: 1 = light reflected once (the "
+                "thesis), each more gathers the last bounce's light again",
+                1, 16, [](Settings& s) -> int& { return s.giBounces; }),
         intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
                 [](Settings& s) -> int& { return s.voxel.resolution; }),
         intSetting("voxel.cascades",

@@ -130,6 +130,9 @@ struct Settings {
     // Materials (Blinn-Phong; the specular term is extra to the Lambertian reference).
     float specular = 0.04f;     // material.specular: ks, 0 switches the specular term off
     float shininess = 64.0f;    // material.shininess: Blinn-Phong exponent n
+    // Indirect light.
+    int giBounces = 1;          // gi.bounces: bounces of indirect light voxel and atlas GI
+                                // follow (1: light reflected once, the thesis)
     ShadowSettings shadow;
     LineSpaceSettings lineSpace;
     VoxelSettings voxel;

@@ -188,7 +188,7 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
             ? std::sqrt(plan.surfaceArea / kAtlasFill) / double(plan.atlasResolution)
             : 0.0;
     plan.voxelMemory = voxel::VoxelTextures::memoryFor(plan.voxel.resolution, plan.voxel.levels,
-            settings.voxel.anisotropic);
+            settings.voxel.anisotropic, settings.giBounces > 1);
     bool dynamic = false;
     for (const scene::Instance& instance : scene.instances) dynamic |= instance.dynamic;
     if (dynamic && settings.voxel.cache) {
@@ -200,7 +200,8 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
                                                             gl::textureBytes(GL_R32UI, size, 1)});
     }
     plan.atlasMemory = atlas::AtlasTextures::memoryFor(
-            plan.atlasResolution, atlas::AtlasTextures::needsBackSides(scene));
+            plan.atlasResolution, atlas::AtlasTextures::needsBackSides(scene),
+            settings.giBounces);
     plan.shadowMemory = ShadowPass::memoryFor(plannedLights(lights, plan), settings.shadow);
     return plan;
 }

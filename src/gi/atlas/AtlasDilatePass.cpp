@@ -6,13 +6,7 @@
 namespace gi::atlas {
 
 bool AtlasDilatePass::init(gl::ShaderLibrary& shaders, std::string& error) {
-    mProgram = shaders.build({"atlas/dilate",
-                                     {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
-                                             {GL_FRAGMENT_SHADER, "atlas/dilate.frag"}},
-                                     {}},
-            error);
-    mEmpty = gl::createVertexArray("atlas/dilate");
-    return bool(mProgram);
+    return mPass.init(shaders, "atlas/dilate", "atlas/dilate.frag", error);
 }
 
 bool AtlasDilatePass::attach(const AtlasTextures& textures, std::string& error) {
@@ -23,20 +17,10 @@ bool AtlasDilatePass::attach(const AtlasTextures& textures, std::string& error) 
 void AtlasDilatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
     (void)out;   // textures.lit is attached to mFramebuffer
     gl::GpuScope scope(profiler, "atlas/dilate");
-    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
-    glViewport(0, 0, mResolution, mResolution);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glUseProgram(mProgram.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sums.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_SUMS_BACK, in.textures.sumsBack.id());
-    glBindVertexArray(mEmpty.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sumsOf(in.bounce).id());
+    glBindTextureUnit(BIND_TEX_ATLAS_SUMS_BACK, in.textures.sumsBackOf(in.bounce).id());
+    mPass.draw(mFramebuffer, mResolution);
 }
 
 } // namespace gi::atlas

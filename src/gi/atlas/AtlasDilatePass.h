@@ -5,6 +5,7 @@
 // Outputs: AtlasTextures lit (RGBA16F, rgb = E_ind in W/m^2, a = 1 surface / 0.5 dilated).
 #pragma once
 
+#include "gi/atlas/AtlasTexelPass.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
@@ -16,6 +17,7 @@ public:
     struct Inputs {
         const AtlasTextures& textures;     // sums (RGBA32F, rgb = gather sums, a = written)
         const gl::Buffer& atlasUniforms;   // AtlasUniforms, std140: R, 1 / samples, radius
+        int bounce = 0;                    // the sums read: textures.sumsOf(bounce)
     };
     struct Outputs {
         const AtlasTextures& textures;     // lit, the layer attach() bound
@@ -27,9 +29,8 @@ public:
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
-    gl::ProgramRef mProgram;
+    AtlasTexelPass mPass;
     gl::Framebuffer mFramebuffer;
-    gl::VertexArray mEmpty;
     int mResolution = 0;
 };
 

@@ -23,20 +23,31 @@ bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 bool AtlasGatherPass::attach(const AtlasTextures& textures, std::string& error) {
     mResolution = textures.resolution;
-    return gl::attachFramebuffer(mFramebuffer, "atlas/gather", {&textures.sums, textures.attachable(textures.sumsBack)}, nullptr, error);
+    mFramebuffers.clear();
+    for (int bounce = 0; bounce < textures.bounceCount(); ++bounce) {
+        mFramebuffers.emplace_back();
+        if (!gl::attachFramebuffer(mFramebuffers.back(), "atlas/gather",
+                    {&textures.sumsOf(bounce), textures.attachable(textures.sumsBackOf(bounce))},
+                    nullptr, error)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 void AtlasGatherPass::clear() {
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 1, zero);
+    for (const gl::Framebuffer& framebuffer : mFramebuffers) {
+        glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
+        glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zero);
+    }
 }
 
 void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
-    (void)out;   // textures.sums is attached to mFramebuffer
+    (void)out;   // textures.sumsOf(bounce) is attached to mFramebuffers[bounce]
     gl::GpuScope scope(profiler, "atlas/gather");
     const GLuint program = in.occupancy ? mVoxelProgram.id() : mProgram.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffers[std::size_t(in.bounce)].id());
     glViewport(0, 0, mResolution, mResolution);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -46,8 +57,8 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
     glUseProgram(program);
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.direct.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, in.textures.directBack.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.senderRadiance(in.bounce).id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, in.textures.senderRadianceBack(in.bounce).id());
     glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, in.textures.normal.id());
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     glBindTextureUnit(BIND_TEX_ATLAS_SAMPLES, in.samples.id());

@@ -9,6 +9,8 @@
 //          visibility.
 // Outputs: AtlasTextures sums (RGBA32F): rgb += estimator constant x sum over this set,
 //          a = 1 where a receiver was written.
+// With gi.bounces > 1 bounce b reads the senders of AtlasTextures::senderRadiance(b) and adds
+// to sumsOf(b).
 #pragma once
 
 #include "gi/GiTechnique.h"
@@ -16,6 +18,8 @@
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/ShaderLibrary.h"
+
+#include <vector>
 
 namespace gi::atlas {
 
@@ -27,21 +31,22 @@ public:
         const gl::Buffer& atlasUniforms;  // AtlasUniforms, std140: R, N, estimator, rotation
         const OccupancyVolume* occupancy; // nullptr: no visibility test
         const AtlasSenderSamplingPass& senderSampling; // executed for this set (area estimator)
+        int bounce = 0;                   // 0: the direct light's gather, b: bounce b's
     };
     struct Outputs {
-        const AtlasTextures& textures;    // sums, the layer attach() bound (blended into)
+        const AtlasTextures& textures;    // sumsOf(bounce), a layer attach() bound (blended into)
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    // Draws into textures.sums from now on; false with a message if that is not renderable.
+    // Draws into textures.sumsOf(b) from now on; false with a message if that is not renderable.
     bool attach(const AtlasTextures& textures, std::string& error);
-    // Zeroes the sums: the next execute starts a new accumulation.
+    // Zeroes the sums of every bounce: the next execute starts a new accumulation.
     void clear();
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
     gl::ProgramRef mProgram, mVoxelProgram;
-    gl::Framebuffer mFramebuffer;
+    std::vector<gl::Framebuffer> mFramebuffers;   // one per bounce
     gl::VertexArray mEmpty;
     int mResolution = 0;
 };

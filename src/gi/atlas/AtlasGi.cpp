@@ -53,7 +53,7 @@ bool AtlasGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::s
     mUniforms = gl::createBuffer(
             sizeof(shader::AtlasUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "atlas/uniforms");
     return mPose.init(shaders, error) && mGBuffer.init(shaders, error) &&
-            mSenderSampling.init(shaders, error) &&
+            mSenderSampling.init(shaders, error) && mBounceSenders.init(shaders, error) &&
             mGather.init(shaders, error) && mDilate.init(shaders, error) &&
             mResolve.init(shaders, error) && mDebugViewPass.init(shaders, error);
 }
@@ -85,9 +85,13 @@ bool AtlasGi::buildAtlasGeometry(std::string& error) {
                     : (" (not cached: " + mBuildInfo.cacheError + ")").c_str());
     mGeometry.upload(mMesh, mAtlas, mFollowsPose);
     mPosedGeometry = ~std::uint64_t(0);
-    mTextures.allocate(mSettings.resolution, mBackSides);
+    return allocateLayers(error);
+}
+
+bool AtlasGi::allocateLayers(std::string& error) {
+    mTextures.allocate(mSettings.resolution, mBackSides, mBounces);
     return mGBuffer.attach(mTextures, error) && mGather.attach(mTextures, error) &&
-            mDilate.attach(mTextures, error);
+            mDilate.attach(mTextures, error) && mBounceSenders.attach(mTextures, error);
 }
 
 bool AtlasGi::configure(const Settings& settings, std::string& error) {
@@ -102,7 +106,8 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         return false;
     }
     if (!gl::fitsResourceBudget("atlas.resolution " + std::to_string(s.resolution) +
-                    " (atlas layers)", AtlasTextures::memoryFor(s.resolution, mBackSides), error)) {
+                    " (atlas layers)",
+                AtlasTextures::memoryFor(s.resolution, mBackSides, settings.giBounces), error)) {
         return false;
     }
     if (s.samples > maxTexture) {
@@ -113,11 +118,17 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     const bool rebuild =
             !mConfigured || s.resolution != mSettings.resolution || s.gutter != mSettings.gutter;
     const bool resample = !mConfigured || s.samples != mSettings.samples;
-    const bool changed = !mConfigured || !(s == mSettings) || !(settings.shadow == mShadowSettings);
+    const bool relayer = !mConfigured || settings.giBounces != mBounces;
+    const bool changed = !mConfigured || !(s == mSettings) ||
+                         !(settings.shadow == mShadowSettings) || relayer;
     const AtlasSettings previous = mSettings;
+    const int previousBounces = mBounces;
     mSettings = s;
-    if (rebuild && !buildAtlasGeometry(error)) {
+    mBounces = settings.giBounces;
+    if (rebuild ? !buildAtlasGeometry(error)
+                : relayer && mMesh.triangleCount() > 0 && !allocateLayers(error)) {
         mSettings = previous;
+        mBounces = previousBounces;
         return false;
     }
     if (resample) {
@@ -220,14 +231,19 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     }
     if (plan.gather) {
         if (plan.restart) mGather.clear();
-        if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
-            // The power table follows the G-buffer's direct light.
-            mSenderSampling.execute(
-                    {mTextures, mUniforms, mSettings.samples, plan.drawGBuffer}, profiler);
+        for (int bounce = 0; bounce < mBounces; ++bounce) {
+            if (bounce > 0) mBounceSenders.execute({mTextures, mUniforms}, profiler);
+            if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
+                // The power table follows the senders' radiance: the G-buffer's direct light,
+                // which the further bounces' tables replace every frame.
+                const bool table = plan.drawGBuffer || mBounces > 1;
+                mSenderSampling.execute(
+                        {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
+            }
+            mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling, bounce},
+                    {mTextures}, profiler);
+            mDilate.execute({mTextures, mUniforms, bounce}, {mTextures}, profiler);
         }
-        mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling},
-                {mTextures}, profiler);
-        mDilate.execute({mTextures, mUniforms}, {mTextures}, profiler);
     }
     ++mFrameIndex;
 

@@ -8,6 +8,9 @@
 //      points),
 //   3. normalise and dilate into the gutters -> lit atlas of E_ind (W/m^2),
 //   4. resolve: the lit atlas seen from the camera -> screen-space E_ind (4.7).
+// With gi.bounces = B > 1, steps 2-3 run B times per frame: each further gather's senders
+// send their direct light plus rho/pi x the E_ind just gathered (AtlasBounceSendersPass), so
+// the last one's E_ind holds B bounces.
 // Progressive mode (the thesis' future work, 5.4): a static scene's G-buffer is built once and
 // each frame adds one more rotated sample set until atlas.target_samples; changes to lights,
 // geometry or settings start over. The atlas parameterisation (AtlasBuilder) is built when
@@ -17,6 +20,7 @@
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/atlas/AtlasBounceSendersPass.h"
 #include "gi/atlas/AtlasCache.h"
 #include "gi/atlas/AtlasDebugViewPass.h"
 #include "gi/atlas/AtlasDilatePass.h"
@@ -72,6 +76,9 @@ private:
     };
 
     bool buildAtlasGeometry(std::string& error);
+    // Allocates the atlas layers for the resolution and gi.bounces and points the passes at
+    // them.
+    bool allocateLayers(std::string& error);
     // The occupancy the gather tests visibility against (atlas.visibility=voxel), or nullptr.
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
     // Decides this frame's work and records in mContent what the layers will hold after it.
@@ -85,6 +92,7 @@ private:
     AtlasBuildInfo mBuildInfo;
     AtlasSettings mSettings;
     ShadowSettings mShadowSettings;
+    int mBounces = 1;                  // gi.bounces
     bool mConfigured = false;
 
     AtlasGeometry mGeometry;
@@ -104,6 +112,7 @@ private:
     AtlasPosePass mPose;
     AtlasGBufferPass mGBuffer;
     AtlasSenderSamplingPass mSenderSampling;
+    AtlasBounceSendersPass mBounceSenders;
     AtlasGatherPass mGather;
     AtlasDilatePass mDilate;
     AtlasResolvePass mResolve;

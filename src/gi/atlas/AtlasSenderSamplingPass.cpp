@@ -47,8 +47,8 @@ void AtlasSenderSamplingPass::execute(const Inputs& in, gl::GpuProfiler& profile
                 nullptr, 0, "atlas/sender_sampling_pool");
     }
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.direct.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, in.textures.directBack.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, in.textures.senderRadiance(in.bounce).id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, in.textures.senderRadianceBack(in.bounce).id());
     glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, in.textures.normal.id());
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     bind();

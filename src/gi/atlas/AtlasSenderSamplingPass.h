@@ -34,7 +34,8 @@ public:
         const AtlasTextures& textures;     // direct (rgb = L, W/(m^2 sr)), position (w = m^2)
         const gl::Buffer& atlasUniforms;   // AtlasUniforms, std140: R, N, set rotation
         int samples;                       // N, points in the pool
-        bool rebuildTable;                 // the G-buffer changed since the last execute
+        bool rebuildTable;                 // the senders' radiance changed since the last execute
+        int bounce = 0;                    // whose senders: textures.senderRadiance(bounce)
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);

@@ -20,7 +20,7 @@ gl::Texture layer(GLenum format, int resolution, GLenum filter, const char* labe
 
 } // namespace
 
-void AtlasTextures::allocate(int size, bool withBackSides) {
+void AtlasTextures::allocate(int size, bool withBackSides, int bounceCount) {
     resolution = size;
     backSides = withBackSides;
     direct = layer(kDirectFormat, size, GL_NEAREST, "atlas/direct");
@@ -33,12 +33,23 @@ void AtlasTextures::allocate(int size, bool withBackSides) {
     directBack = layer(kDirectFormat, back, GL_NEAREST, "atlas/back/direct");
     sumsBack = layer(kSumsFormat, back, GL_NEAREST, "atlas/back/sums");
     litBack = layer(kLitFormat, back, GL_LINEAR, "atlas/back/lit");
+    const int sendersSize = bounceCount > 1 ? size : 1;
+    senders = layer(kDirectFormat, sendersSize, GL_NEAREST, "atlas/bounce/senders");
+    sendersBack = layer(kDirectFormat, std::min(back, sendersSize), GL_NEAREST,
+            "atlas/bounce/back/senders");
+    bounceSums.clear();
+    bounceSumsBack.clear();
+    for (int b = 1; b < bounceCount; ++b) {
+        bounceSums.push_back(layer(kSumsFormat, size, GL_NEAREST, "atlas/bounce/sums"));
+        bounceSumsBack.push_back(layer(kSumsFormat, back, GL_NEAREST, "atlas/bounce/back/sums"));
+    }
 }
 
-std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution, bool backSides) {
+std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution, bool backSides,
+        int bounceCount) {
     const glm::ivec3 size(resolution, resolution, 1);
     const glm::ivec3 back = backSides ? size : glm::ivec3(1);
-    return {{"atlas/direct", gl::textureBytes(kDirectFormat, size, 1)},
+    std::vector<gl::MemoryItem> items = {{"atlas/direct", gl::textureBytes(kDirectFormat, size, 1)},
             {"atlas/normal", gl::textureBytes(kNormalFormat, size, 1)},
             {"atlas/position", gl::textureBytes(kPositionFormat, size, 1)},
             {"atlas/albedo", gl::textureBytes(kAlbedoFormat, size, 1)},
@@ -47,6 +58,15 @@ std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution, bool backSi
             {"atlas/back/direct", gl::textureBytes(kDirectFormat, back, 1)},
             {"atlas/back/sums", gl::textureBytes(kSumsFormat, back, 1)},
             {"atlas/back/lit", gl::textureBytes(kLitFormat, back, 1)}};
+    if (bounceCount > 1) {
+        const std::size_t senders = gl::textureBytes(kDirectFormat, size, 1) +
+                                    gl::textureBytes(kDirectFormat, back, 1);
+        const std::size_t sumsPerBounce = gl::textureBytes(kSumsFormat, size, 1) +
+                                          gl::textureBytes(kSumsFormat, back, 1);
+        items.push_back({"atlas/bounce/senders", senders});
+        items.push_back({"atlas/bounce/sums", std::size_t(bounceCount - 1) * sumsPerBounce});
+    }
+    return items;
 }
 
 bool AtlasTextures::needsBackSides(const scene::Scene& scene) {

@@ -20,7 +20,7 @@ gl::Texture createVolume(GLenum format, glm::ivec3 size, const char* label) {
 
 } // namespace
 
-void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels) {
+void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces) {
     resolution = v;
     levels = l;
     anisotropic = anisotropicVoxels;
@@ -30,6 +30,7 @@ void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels) {
     irradiance = createVolume(GL_RGBA16F, size, "voxel/irradiance");
     helper = createVolume(GL_RGBA16F, size, "voxel/helper");
     lock = createVolume(GL_R32UI, size, "voxel/lock");
+    gathered = bounces ? createVolume(GL_RGBA16F, size, "voxel/gathered") : gl::Texture();
     const int faces = facesOf(anisotropic);
     directional = anisotropic
             ? createVolume(GL_RGBA16F, {v * faces, v, v * l}, "voxel/directional")
@@ -55,7 +56,8 @@ void VoxelTextures::clear() const {
     if (anisotropic) glClearTexImage(directional.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
 }
 
-std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotropicVoxels) {
+std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotropicVoxels,
+        bool bounces) {
     const glm::ivec3 size(v, v, v * l);
     const int faces = facesOf(anisotropicVoxels);
     std::vector<gl::MemoryItem> items = {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
@@ -65,6 +67,7 @@ std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotro
             {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)},
             {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2},
                     gl::fullMipCount(v / 2))}};
+    if (bounces) items.push_back({"voxel/gathered", gl::textureBytes(GL_RGBA16F, size, 1)});
     if (anisotropicVoxels) {
         items.push_back({"voxel/directional",
                 gl::textureBytes(GL_RGBA16F, {v * faces, v, v * l}, 1)});

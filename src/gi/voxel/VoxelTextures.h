@@ -6,7 +6,8 @@
 // holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB).
 // With voxel.anisotropic a directional copy of the cascade holds each voxel as seen from each
 // of its 6 faces (RGBA16F, 48 more bytes per voxel: 4.72 MB at v=32, l=3) and the pyramid
-// holds 6 faces too (DirectionalVoxelsPass.h).
+// holds 6 faces too (DirectionalVoxelsPass.h). With gi.bounces > 1 one more RGBA16F volume
+// remembers the indirect light the voxels gathered (BouncePass.h), 8 more bytes per voxel.
 #pragma once
 
 #include "gl/Objects.h"
@@ -28,15 +29,17 @@ struct VoxelTextures {
                               // 6 x-slabs, one per face, as `directional`
     gl::Texture directional;  // anisotropic only, (6v, v, v*l): x-slab f = the voxel seen from
                               // face f (VOXEL_FACE_*), rgb = rho E x a, a = facing coverage
+    gl::Texture gathered;     // gi.bounces > 1 only: rgb = the indirect E x coverage the voxel
+                              // gathered from the other voxels, included in irradiance
     int resolution = 0, levels = 0;
     bool anisotropic = false;
 
-    void allocate(int v, int l, bool anisotropicVoxels);
+    void allocate(int v, int l, bool anisotropicVoxels, bool bounces);
     [[nodiscard]] int pyramidLevels() const;   // log2(v): mip 0 is (v/2)^3, the last 1^3
     void clear() const;
     // What allocate(v, l) allocates, before allocating it.
     [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int v, int l,
-            bool anisotropicVoxels);
+            bool anisotropicVoxels, bool bounces = false);
 };
 
 } // namespace gi::voxel

@@ -21,7 +21,8 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
     mUniforms = gl::createBuffer(sizeof(shader::VoxelUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT,
             "voxel/uniforms");
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
-           mPropagate.init(shaders, error) && mDirectional.init(shaders, error) &&
+           mPropagate.init(shaders, error) && mBounce.init(shaders, error) &&
+           mDirectional.init(shaders, error) &&
            mPyramid.init(shaders, error) &&
            mTrace.init(shaders, error) &&
            mFilter.init(shaders, error) &&
@@ -55,27 +56,37 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 " exceeds the largest viewport " + std::to_string(maxViewport[0]);
         return false;
     }
-    // 32 bytes per voxel, 80 anisotropic (VoxelTextures.h); refuse before allocating rather
-    // than let the driver fail (or swap) halfway through a frame.
-    const double bytesPerVoxel = s.anisotropic ? 80.0 : 32.0;
+    // 32 bytes per voxel, 80 anisotropic, 8 more for further bounces (VoxelTextures.h);
+    // refuse before allocating rather than let the driver fail (or swap) halfway through a
+    // frame.
+    const double bytesPerVoxel =
+            (s.anisotropic ? 80.0 : 32.0) + (settings.giBounces > 1 ? 8.0 : 0.0);
     const double bytes = bytesPerVoxel * std::pow(double(s.resolution), 3.0) * double(s.levels);
     if (!gl::fitsResourceBudget("voxel.resolution " + std::to_string(s.resolution) +
                     " with voxel.cascades " + std::to_string(s.levels) + " (voxel textures)",
                 bytes, error)) {
         return false;
     }
-    if (!mConfigured || !(s == mSettings)) {
+    if (settings.giBounces > 1 && s.anisotropic) {
+        error = "gi.bounces " + std::to_string(settings.giBounces) +
+                " needs isotropic voxels (voxel.anisotropic=0): the directional voxels keep no "
+                "irradiance a further bounce could add to";
+        return false;
+    }
+    if (!mConfigured || !(s == mSettings) || settings.giBounces != mBounces) {
         mContent = Content::None;
         mStaticCacheValid = false;
     }
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
-                            s.levels != mSettings.levels || s.anisotropic != mSettings.anisotropic;
+                            s.levels != mSettings.levels || s.anisotropic != mSettings.anisotropic ||
+                            (settings.giBounces > 1) != (mBounces > 1);
     const bool replace = reallocate || s.extent != mSettings.extent ||
                          s.sceneCentred != mSettings.sceneCentred ||
                          s.clampCentre != mSettings.clampCentre;
     mSettings = s;
+    mBounces = settings.giBounces;
     mConfigured = true;
-    if (reallocate) mTextures.allocate(s.resolution, s.levels, s.anisotropic);
+    if (reallocate) mTextures.allocate(s.resolution, s.levels, s.anisotropic, mBounces > 1);
     if (replace) mFinestExtent = s.extent;
     return true;
 }
@@ -95,7 +106,7 @@ void VoxelizationManager::writeUniforms() {
     u.trace = glm::vec4(std::tan(halfAngle), maxDistance, mSettings.stepFactor,
             mSettings.falloff ? 1.0f : 0.0f);
     // The 9 cones partition the cosine-weighted hemisphere at theta_b, halfway between the
-    // normal and the ring of cones at 50 degrees (see cone_trace.frag).
+    // normal and the ring of cones at 50 degrees (see cone_tracing.glsl).
     const float ringAngle = glm::radians(50.0f);
     const float boundary = 0.5f * ringAngle;
     const float central = std::sin(boundary) * std::sin(boundary);
@@ -218,6 +229,11 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
     mPropagate.execute({mUniforms}, {mTextures}, profiler);
     if (mTextures.anisotropic) mDirectional.execute({mUniforms, mTextures}, {mTextures}, profiler);
     mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
+    for (int bounce = 2; bounce <= mBounces; ++bounce) {
+        mBounce.execute({mUniforms, in.frameUniforms, bounce == 2}, {mTextures}, profiler);
+        mPropagate.execute({mUniforms}, {mTextures}, profiler);
+        mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
+    }
 }
 
 void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profiler) {

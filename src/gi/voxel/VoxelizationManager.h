@@ -11,6 +11,7 @@
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/voxel/BouncePass.h"
 #include "gi/voxel/CascadeVolume.h"
 #include "gi/voxel/ConeTracePass.h"
 #include "gi/voxel/DirectionalVoxelsPass.h"
@@ -68,6 +69,7 @@ private:
     void trace(const GiFrameInputs& in, gl::GpuProfiler& profiler);
 
     VoxelSettings mSettings;
+    int mBounces = 1;   // gi.bounces
     bool mConfigured = false;
     scene::Aabb mSceneBounds;
     CascadeVolume mVolume;
@@ -88,6 +90,7 @@ private:
     VoxelizePass mVoxelize;
     InjectPass mInject;
     PropagatePass mPropagate;
+    BouncePass mBounce;
     DirectionalVoxelsPass mDirectional;
     RadiancePyramidPass mPyramid;
     ConeTracePass mTrace;

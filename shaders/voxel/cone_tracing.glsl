@@ -1,0 +1,341 @@
+// Cone tracing through the voxel cascade (thesis 4.2.5, 4.3.3.4, Listing 4.5), shared by the
+// screen-space trace (cone_trace.frag) and the voxels' own gather of a further bounce
+// (bounce_gather.comp): coneIrradiance traces 9 cones over a surface's hemisphere, one along
+// the normal and eight rotated by 50 degrees around it, each marched front to back until it
+// is opaque or leaves the volume. Voxels facing away from the cone are skipped (thesis).
+//
+// Calibration (so the output is E_ind in W/m^2, DESIGN.md): a voxel's outgoing radiance is
+// albedo/pi * E; a cone returns the composited radiance L_i seen along it, and the sky's
+// radiance times what stays transparent where it escapes; E_ind = pi * sum_i w_i L_i, where w_i is the fraction of the
+// cosine-weighted hemisphere the cone stands for (central cap: sin^2(theta_b), each ring cone
+// cos^2(theta_b)/8, theta_b halfway between the central axis and the ring). The thesis'
+// weights (cos theta_i, normalised by their sum) differ from these by under 10%. Albedo and E
+// are both stored premultiplied by coverage, so a filtered read's light per covered area is
+// albedo x E / coverage^2: an empty neighbour lowers a trilinear read's coverage, not the
+// albedo it returns.
+//
+// Finer levels (the thesis' cascade): the cone steps by its diameter through the level whose
+// voxels match it, reading filtered voxels; a sample of coverage a is as opaque as
+// 1 - (1 - a)^(step / voxel size), so two samples in one voxel add up to one voxel's worth
+// (every sample counts: reading each voxel once, as the thesis does, left a wall half its
+// optical depth wherever steps were half a voxel).
+//
+// The coarsest level: a cone there is a ray to the voxels it reads, narrower than them near
+// its start and wider than any voxel the cascade has once it outgrows them (the cascade is
+// centred on the camera, so a scene seen from outside lies wholly in the coarsest level).
+// Its axis is walked voxel by voxel (a 3D DDA). A voxel holding one flat surface
+// (voxel_plane.glsl) is met where the axis crosses that plane, with opacity = coverage, or
+// not at all; other occupied voxels occlude like finer levels' samples over the axis' path
+// through them. Whenever the cascade has more than one level the coarsest is propagated, and
+// its normals cannot tell one plane from several: with voxel.coarse_planes (the default) the
+// walk takes each of its voxels for one plane, so a voxel where surfaces meet is met at their
+// mean plane; without it every coarser voxel occludes along the path (the honest rule, which
+// measured worse: a Cornell box seen from outside, relative RMSE 0.46 -> 1.01, the walls'
+// voxels smeared over their whole path let the ceiling's hot patch reach every cone near
+// it). The light met there is the
+// reflected light over the cone's footprint: the filtered voxels while the cone is narrower
+// than they are, then the pyramid above the coarsest level (RadiancePyramidPass.h) at the
+// cone's width. voxel.pyramid_mips caps that width: a texel's light is averaged across its
+// whole footprint, so a wide one straddling a wall shows a cone in one room the other room's
+// light (anisotropic texels hide what lies behind along the cone's axis, not beside it).
+// Reading one voxel instead made the cone a ray that sees a small bright patch (the ceiling
+// over a light) in full or not at all, which finer voxels alias ever more; and filtered
+// coverage spread each wall over two half-opaque voxel layers that let a quarter of a
+// crossing ray through. The pyramid holds light only: its coverage would halve a one-voxel
+// wall's opacity per mip and let cones through walls.
+//
+// Anisotropic voxels (voxel.anisotropic, voxel_directional.glsl): the light a cone meets is
+// read from the three faces the cone sees, weighted by its direction's squared components
+// (which sum to 1), from the directional voxels and the directional pyramid, and a voxel
+// faces away when none of those faces holds a surface facing the cone. Opacity stays the
+// isotropic coverage (directional_build.comp says why).
+#ifndef GI_VOXEL_CONE_TRACING_GLSL
+#define GI_VOXEL_CONE_TRACING_GLSL
+
+#include "../common/constants.glsl"
+#include "../common/frame.glsl"
+#include "../common/voxel_cascade.glsl"
+#include "../common/voxel_plane.glsl"
+#include "voxel_directional.glsl"
+
+layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelAlbedoTexture;
+layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelIrradianceTexture;
+layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelNormalTexture;
+layout(binding = BIND_TEX_VOXEL_PYRAMID) uniform sampler3D voxelPyramidTexture;
+layout(binding = BIND_TEX_VOXEL_DIRECTIONAL) uniform sampler3D voxelDirectionalTexture;
+
+// A ray crosses at most 3 v voxels of the coarsest level; finer levels add fewer steps.
+const int kMaxSteps = 1024;
+// The axis meets a flat voxel's plane up to this many voxel sizes, measured along the axis,
+// before or after its path through the voxel.
+const float kAxisCrossingSlack = 0.01;
+// The coarsest-level walk crosses empty space a block of kEmptyBlock^3 voxels at a time: a
+// texel of the radiance pyramid's mip kEmptyBlockMip (isotropic voxels only).
+const int kEmptyBlockMip = 1;
+const int kEmptyBlock = 2 << kEmptyBlockMip;
+// Anisotropic voxels whose faces towards a cone are covered less than this hold nothing that
+// faces it.
+const float kNothingFaces = 1e-3;
+
+struct VoxelSample {
+    vec4 albedo;       // rgb = albedo x coverage, a = coverage
+    vec3 irradiance;   // E x coverage
+    vec3 normal;
+};
+
+VoxelSample readLevel(vec3 p, int level) {
+    vec3 tc = voxelTexcoord(p, level);
+    VoxelSample s;
+    s.albedo = texture(voxelAlbedoTexture, tc);
+    s.irradiance = texture(voxelIrradianceTexture, tc).rgb;
+    s.normal = texture(voxelNormalTexture, tc).xyz;
+    return s;
+}
+
+bool anisotropicVoxels() { return voxel.grid.z != 0; }
+
+// The directional voxels of `level` around p as a cone travelling along dir sees them:
+// rgb = rho E x a, a = facing coverage.
+vec4 readDirectional(vec3 p, int level, vec3 dir) {
+    vec3 tc = voxelTexcoord(p, level);
+    vec3 weight = dir * dir;
+    vec4 sum = vec4(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        float face = float(faceSeenAlong(dir, axis));
+        sum += weight[axis] * texture(voxelDirectionalTexture,
+                vec3((tc.x + face) / float(VOXEL_FACES), tc.yz));
+    }
+    return sum;
+}
+
+// How much of the voxel at `texel` (cascade texel, slab included) faces a cone along dir:
+// the opacity of its faces the cone sees (voxel_directional.glsl).
+float facingCone(ivec3 texel, vec3 dir) {
+    float sum = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        sum += dir[axis] * dir[axis] *
+                texelFetch(voxelDirectionalTexture, directionalTexel(texel, faceSeenAlong(dir, axis)),
+                        0).a;
+    }
+    return sum;
+}
+
+// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3) as seen along
+// dir; each face's read stays half a texel inside its slab so filtering never mixes faces.
+// The read is centred half a texel back along the cone (as in coarsestLight).
+vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir) {
+    float slab = float(max((voxelResolution() / 2) >> mip, 1));
+    vec3 local = clamp(uvw * slab, vec3(0.5), vec3(slab - 0.5));
+    vec3 weight = dir * dir;
+    vec4 sum = vec4(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        float face = float(faceSeenAlong(dir, axis));
+        vec3 tc = vec3((local.x + face * slab) / (slab * float(VOXEL_FACES)), local.yz / slab);
+        sum += weight[axis] * textureLod(voxelPyramidTexture, tc, float(mip));
+    }
+    return sum;
+}
+
+// The pyramid at a fractional mip: readDirectionalPyramid's clamp differs per mip, so the two
+// mips are read apart and blended here.
+vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
+    if (!anisotropicVoxels()) return textureLod(voxelPyramidTexture, uvw, lod);
+    int mip = int(floor(lod));
+    vec4 lower = readDirectionalPyramid(uvw, mip, dir);
+    float blend = lod - float(mip);
+    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, dir), blend) : lower;
+}
+
+// Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
+// around p on the coarsest level: the filtered voxels while the cone is narrower than they
+// are, then the pyramid mip whose texels match the diameter (blended over the first octave).
+vec3 coarsestLight(vec3 p, float diameter, vec3 dir) {
+    int coarsest = voxelLevels() - 1;
+    float spread = log2(diameter / levelVoxelSize(coarsest));
+    vec4 wide = vec4(0.0);
+    if (spread > 0.0) {
+        float mip = max(spread - 1.0, 0.0);
+        if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
+        wide = pyramidAt((p - levelOrigin(coarsest)) / levelExtent(coarsest), mip, dir);
+        if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
+    }
+    if (anisotropicVoxels()) {
+        // Centred half a voxel back along the cone, the filtered read blends the voxel met
+        // with the one in front of it, not with the one behind: behind a wall, that one
+        // shows the other room's light.
+        vec4 seen = readDirectional(p, coarsest, dir);
+        vec3 light = seen.rgb / max(seen.a, 1e-4);
+        return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
+    }
+    vec3 tc = voxelTexcoord(p, coarsest);
+    vec4 albedo = texture(voxelAlbedoTexture, tc);
+    float coverage = max(albedo.a, 1e-4);
+    vec3 light = albedo.rgb * texture(voxelIrradianceTexture, tc).rgb / (coverage * coverage);
+    return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
+}
+
+// Distance along dir, in voxels, from `local` (coarsest-level voxel units) out of its cell of
+// a grid of `cellSize` voxels; at least a thousandth of a voxel, so the walk always moves.
+float cellExit(vec3 local, vec3 dir, float cellSize) {
+    vec3 cell = floor(local / cellSize) * cellSize;
+    vec3 toExit = mix(local - cell, cell + cellSize - local, greaterThan(dir, vec3(0.0)));
+    vec3 exitAt = toExit / max(abs(dir), vec3(1e-6));
+    return max(min(exitAt.x, min(exitAt.y, exitAt.z)), 1e-3);
+}
+
+// Whether the kEmptyBlock^3 coarsest voxels around `local` are all empty: the pyramid texel
+// over them averages their coverage, so it is zero only when every one is.
+bool emptyBlock(vec3 local) {
+    return texelFetch(voxelPyramidTexture, ivec3(local) / kEmptyBlock, kEmptyBlockMip).a <= 0.0;
+}
+
+vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
+    float tanHalf = voxel.trace.x;
+    float finest = levelVoxelSize(0);
+    int coarsest = voxelLevels() - 1;
+    float coarsestSize = levelVoxelSize(coarsest);
+    vec3 coarsestOrigin = levelOrigin(coarsest);
+    ivec3 coarsestSlab = ivec3(0, 0, coarsest * voxelResolution());
+    int startLevel = max(finestLevel(origin), 0);
+    float dist = levelVoxelSize(startLevel);
+    vec3 radiance = vec3(0.0);
+    float opacity = 0.0;
+    int steps = 0;
+    while (steps < kMaxSteps && dist < maxDistance && opacity < 0.99) {
+        vec3 p = origin + dir * dist;
+        int available = finestLevel(p);
+        if (available < 0) break;
+        float diameter = max(2.0 * tanHalf * dist, finest);
+        float lod = clamp(log2(diameter / finest), float(available), float(coarsest));
+        int level = int(floor(lod));
+        float blend = lod - float(level);
+        float corrected;
+        vec3 reflected;
+        if (level == coarsest) {
+            // Walk the axis voxel by voxel through the coarsest level (a 3D DDA) to the
+            // first voxel it meets a surface in; the loop only fetches coverage, so the
+            // costly reads below run once per surface met.
+            bool found = false, crossed = false;
+            float hit = 0.0, coverage = 0.0, path = 0.0, entry = dist;
+            while (steps < kMaxSteps && dist < maxDistance) {
+                ++steps;
+                p = origin + dir * dist;
+                vec3 local = (p - coarsestOrigin) / coarsestSize;
+                if (any(lessThan(local, vec3(0.0))) ||
+                        any(greaterThanEqual(local, vec3(voxelResolution())))) {
+                    dist = maxDistance;
+                    break;
+                }
+                // A finer level takes over again where the cone is still narrow enough (the
+                // test the level choice above makes); empty blocks are skipped only where none
+                // can (the cone only widens).
+                bool narrow = coarsest > 0 && log2(diameter / finest) < float(coarsest);
+                if (narrow && insideLevel(p, coarsest - 1)) break;
+                bool skipEmpty = !narrow && !anisotropicVoxels();
+                if (skipEmpty && emptyBlock(local)) {
+                    dist += (cellExit(local, dir, float(kEmptyBlock)) + 1e-3) * coarsestSize;
+                    diameter = max(2.0 * tanHalf * dist, finest);
+                    continue;
+                }
+                vec3 cell = floor(local);
+                path = cellExit(local, dir, 1.0) * coarsestSize;
+                entry = dist;
+                dist += path + 1e-3 * coarsestSize;
+                diameter = max(2.0 * tanHalf * dist, finest);
+                ivec3 texel = ivec3(cell) + coarsestSlab;
+                coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0);
+                if (coverage <= 0.0) continue;
+                vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
+                float cosine = dot(dir, plane.xyz);
+                // A voxel facing away from the cone is skipped, as in the thesis: its surface
+                // sends no light this way, and its occlusion would mostly be the cone's own
+                // surface seen from behind (the voxel layer the cone starts in). Anisotropic
+                // voxels tell it per face; a mean normal cannot where surfaces face both ways.
+                if (anisotropicVoxels() ? facingCone(texel, dir) <= kNothingFaces
+                                        : cosine > 0.0) {
+                    continue;
+                }
+                if (voxelHoldsOnePlane(plane, coarsest, voxel.modes.w != 0.0)) {
+                    // One flat surface: the axis meets it where it crosses its plane, or not
+                    // at all in this voxel, and crossing it is an occlusion of `coverage`.
+                    vec3 centre = coarsestOrigin + (cell + 0.5) * coarsestSize;
+                    vec3 exitPoint = p + dir * path;
+                    // The slack along the axis as a distance along the normal.
+                    float slack = kAxisCrossingSlack * -cosine / length(plane.xyz);
+                    if (!segmentCrossesVoxelPlane(plane, centre, coarsestSize, p, exitPoint,
+                            slack)) {
+                        continue;
+                    }
+                    float entrySide = voxelPlaneDistance(plane, centre, coarsestSize, p);
+                    float exitSide = voxelPlaneDistance(plane, centre, coarsestSize, exitPoint);
+                    hit = path * entrySide / (entrySide - exitSide);
+                    crossed = true;
+                } else {
+                    // Several surfaces: occluding along the whole path, light read halfway.
+                    hit = 0.5 * path;
+                }
+                found = true;
+                break;
+            }
+            if (!found) continue;
+            corrected = crossed ? coverage
+                    : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
+            hit = clamp(hit, 0.0, path);
+            reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest),
+                    dir);
+        } else {
+            ++steps;
+            float path = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *
+                    voxel.trace.z, 0.25 * finest);
+            dist += path;
+            VoxelSample s = readLevel(p, level);
+            float voxelSize = levelVoxelSize(level);
+            if (blend > 0.0) {
+                VoxelSample t = readLevel(p, level + 1);
+                s.albedo = mix(s.albedo, t.albedo, blend);
+                s.irradiance = mix(s.irradiance, t.irradiance, blend);
+                s.normal = mix(s.normal, t.normal, blend);
+                voxelSize = mix(voxelSize, levelVoxelSize(level + 1), blend);
+            }
+            float coverage = clamp(s.albedo.a, 0.0, 1.0);
+            if (coverage <= 0.0) continue;
+            if (anisotropicVoxels()) {
+                // Facing away: nothing in the voxels faces the cone.
+                vec4 seen = readDirectional(p, level, dir);
+                if (blend > 0.0) seen = mix(seen, readDirectional(p, level + 1, dir), blend);
+                if (seen.a <= kNothingFaces) continue;
+                reflected = seen.rgb / seen.a;
+            } else {
+                // Facing away: skipped as above.
+                if (dot(s.normal, dir) > 0.0) continue;
+                reflected = s.albedo.rgb * s.irradiance / (coverage * coverage);
+            }
+            corrected = 1.0 - pow(1.0 - min(coverage, 0.9999), path / voxelSize);
+        }
+        vec3 light = reflected / PI * corrected;
+        if (voxel.trace.w != 0.0) light /= 1.0 + dist * dist; // the thesis' falloff
+        radiance += (1.0 - opacity) * light;
+        opacity += (1.0 - opacity) * corrected;
+    }
+    // What the cone has not met when it leaves the volume or reaches its range is the sky
+    // (unless it gave up after kMaxSteps inside).
+    if (steps < kMaxSteps) radiance += (1.0 - opacity) * frame.sky.rgb;
+    return radiance;
+}
+
+// E_ind (W/m^2) on the side of a surface facing n, from 9 cones starting at origin (a voxel
+// off the surface); the ring of cones is turned by ringTurn radians around n.
+vec3 coneIrradiance(vec3 origin, vec3 n, float ringTurn, float maxDistance) {
+    vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
+    vec3 b = cross(n, t);
+    float cosRing = voxel.traceWeights.z, sinRing = voxel.traceWeights.w;
+    vec3 e = voxel.traceWeights.x * traceCone(origin, n, maxDistance);
+    for (int i = 0; i < 8; ++i) {
+        float phi = float(i) * (PI / 4.0) + ringTurn;
+        vec3 dir = cosRing * n + sinRing * (cos(phi) * t + sin(phi) * b);
+        e += voxel.traceWeights.y * traceCone(origin, dir, maxDistance);
+    }
+    return PI * e;
+}
+
+#endif
