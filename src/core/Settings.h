@@ -101,8 +101,9 @@ struct TemporalSettings {
                                   // with the previous frames' reprojected into this view
     float blend = 0.2f;           // gi.temporal_blend: weight of the new frame once a pixel's
                                   // history is long enough (1 = no history)
-    bool clamp = true;            // gi.temporal_clamp: history clamped to the new frame's
-                                  // neighbourhood range, which cuts trails behind moving objects
+    bool clamp = true;            // gi.temporal_clamp: history clipped to the new frame's
+                                  // 3x3 mean +- one deviation, which cuts trails behind
+                                  // moving objects
     bool operator==(const TemporalSettings&) const = default;
 };
 
