@@ -26,14 +26,7 @@ void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
     in.scene.bindLights();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
-    if (in.depthPrepass) {
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glUseProgram(mDepthProgram.id());
-        in.scene.drawAll(mDepthProgram.id(), true);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glDepthFunc(GL_LEQUAL);
-        glDepthMask(GL_FALSE);
-    }
+    if (in.depthPrepass) in.scene.drawDepthPrepass(mDepthProgram.id());
     glUseProgram(mProgram.id());
     const glm::vec2 indirectSize = in.indirect ? glm::vec2(in.indirectSize) : glm::vec2(0.0f);
     glProgramUniform2fv(mProgram.id(), LOC_FORWARD_INDIRECT_SIZE, 1, &indirectSize[0]);

@@ -225,6 +225,15 @@ void GpuScene::bindLights() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_EMITTERS, mEmitters.id());
 }
 
+void GpuScene::drawDepthPrepass(GLuint depthProgram) const {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(depthProgram);
+    drawAll(depthProgram, true);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+}
+
 void GpuScene::drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray,
         DrawSet set) const {
     glBindVertexArray(vertexArray ? vertexArray->id() : mVertexArray.id());

@@ -60,6 +60,10 @@ public:
     // the same order (e.g. the texture atlas' geometry, whose vertices are split at charts).
     void drawAll(GLuint program, bool cullBackFaces, const gl::VertexArray* vertexArray = nullptr,
             DrawSet set = DrawSet::All) const;
+    // Draws every surface's depth with `depthProgram` and leaves depth at GL_LEQUAL without
+    // writes and colour writes on, so the next draw shades only the surface in front of each
+    // pixel (the forward pass, the cone trace).
+    void drawDepthPrepass(GLuint depthProgram) const;
 
     // Every vertex (SceneVertex), for passes that copy posed positions (atlas/follow_pose).
     const gl::Buffer& vertexBuffer() const { return mVertices; }

@@ -30,12 +30,7 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     // Depth first, so that only the visible surface of each pixel traces its cones: without
     // it every surface drawn before the one in front traced 9 cones for nothing.
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glUseProgram(mDepthProgram.id());
-    in.scene.drawAll(mDepthProgram.id(), true);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
+    in.scene.drawDepthPrepass(mDepthProgram.id());
     glUseProgram(mProgram.id());
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.textures.albedo.id());
     glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
