@@ -10,8 +10,17 @@ layout(std140, binding = BIND_UBO_VOXEL) uniform VoxelBlock {
     VoxelUniforms voxel;
 };
 
+// A program built for one cascade shape (VOXEL_SHAPE_RESOLUTION and VOXEL_SHAPE_LEVELS, set
+// by gi/voxel/VoxelShape.h) reads them as constants, so the compiler folds the loops over
+// levels and drops the paths that shape never takes: llvmpipe runs both sides of every branch,
+// lanes masked, so an untaken path costs as much as a taken one.
+#ifdef VOXEL_SHAPE_LEVELS
+int voxelResolution() { return VOXEL_SHAPE_RESOLUTION; }
+int voxelLevels() { return VOXEL_SHAPE_LEVELS; }
+#else
 int voxelResolution() { return voxel.grid.x; }
 int voxelLevels() { return voxel.grid.y; }
+#endif
 vec3 levelOrigin(int level) { return voxel.levelOrigin[level].xyz; }
 float levelVoxelSize(int level) { return voxel.levelOrigin[level].w; }
 float levelExtent(int level) { return voxel.levelOrigin[level].w * float(voxel.grid.x); }

@@ -92,7 +92,11 @@ VoxelSample readLevel(vec3 p, int level) {
     return s;
 }
 
+#ifdef VOXEL_SHAPE_ANISOTROPIC
+bool anisotropicVoxels() { return VOXEL_SHAPE_ANISOTROPIC != 0; }
+#else
 bool anisotropicVoxels() { return voxel.grid.z != 0; }
+#endif
 
 // The directional voxels of `level` around p as a cone travelling along dir sees them:
 // rgb = rho E x a, a = facing coverage.
@@ -211,7 +215,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
         float blend = lod - float(level);
         float corrected;
         vec3 reflected;
-        if (level == coarsest) {
+        if (coarsest == 0 || level == coarsest) {   // a compile-time 0 drops the branch below
             // Walk the axis voxel by voxel through the coarsest level (a 3D DDA) to the
             // first voxel it meets a surface in; the loop only fetches coverage, so the
             // costly reads below run once per surface met.

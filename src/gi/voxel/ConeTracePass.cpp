@@ -5,10 +5,11 @@
 namespace gi::voxel {
 
 bool ConeTracePass::init(gl::ShaderLibrary& shaders, std::string& error) {
-    mProgram = shaders.build({"voxel/cone_trace",
-            {{GL_VERTEX_SHADER, "voxel/cone_trace.vert"}, {GL_FRAGMENT_SHADER, "voxel/cone_trace.frag"}},
-            {}}, error);
-    if (!mProgram) return false;
+    if (!mPrograms.init(shaders, {"voxel/cone_trace",
+                {{GL_VERTEX_SHADER, "voxel/cone_trace.vert"},
+                 {GL_FRAGMENT_SHADER, "voxel/cone_trace.frag"}}, {}}, error)) {
+        return false;
+    }
     mDepthProgram = shaders.build({"voxel/cone_trace_depth",
             {{GL_VERTEX_SHADER, "voxel/cone_trace.vert"},
              {GL_FRAGMENT_SHADER, "common/depth_only.frag"}},
@@ -31,7 +32,9 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     // Depth first, so that only the visible surface of each pixel traces its cones: without
     // it every surface drawn before the one in front traced 9 cones for nothing.
     in.scene.drawDepthPrepass(mDepthProgram.id());
-    glUseProgram(mProgram.id());
+    const VoxelTextures& voxels = in.textures;
+    GLuint program = mPrograms.id({voxels.resolution, voxels.levels, voxels.anisotropic});
+    glUseProgram(program);
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.textures.albedo.id());
     glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.textures.normal.id());
@@ -39,7 +42,7 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     if (in.textures.anisotropic) {
         glBindTextureUnit(BIND_TEX_VOXEL_DIRECTIONAL, in.textures.directional.id());
     }
-    in.scene.drawAll(mProgram.id(), true);
+    in.scene.drawAll(program, true);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glUseProgram(0);

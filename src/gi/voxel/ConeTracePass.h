@@ -7,6 +7,7 @@
 //          0 where no surface.
 #pragma once
 
+#include "gi/voxel/VoxelShape.h"
 #include "gi/voxel/VoxelTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/RenderTarget.h"
@@ -37,7 +38,7 @@ public:
     glm::ivec2 size() const { return mSize; }
 
 private:
-    gl::ProgramRef mProgram;
+    ShapedPrograms mPrograms;          // the trace, built for the cascade's shape
     gl::ProgramRef mDepthProgram;      // the depth pre-pass
     gl::RenderTarget mTarget{"voxel/trace", {GL_RGBA16F, "voxel/indirect", true},
             {GL_DEPTH_COMPONENT32F, "voxel/trace_depth"}};
