@@ -96,6 +96,12 @@
 #define BIND_TEX_TEMPORAL_HISTORY_NORMAL 20 // rgba16f, xyz = its surface normals, w = frames of
                                         // history behind each texel
 
+// Trace reuse (gi/voxel/TraceReusePass.h): one pixel of each 2x2 block traced per frame.
+#define BIND_TEX_REUSE_TRACED       21  // rgba16f, this frame's traced pixels: E_ind, a = view
+                                        // depth (m), one texel per 2x2 block of the trace
+#define BIND_TEX_REUSE_DEPTH        22  // depth32f, the surfaces of every pixel of the trace
+#define BIND_TEX_REUSE_HISTORY      23  // rgba16f, the previous frame's result, E_ind + depth
+
 // Image units (imageLoad/Store/atomics) of the voxel passes.
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
 #define BIND_IMG_VOXEL_NORMAL       1   // rgba8_snorm, running averages: xyz = normal, w = the
@@ -122,6 +128,8 @@
 #define BIND_IMG_TEMPORAL_TARGET    0   // rgba32f, the filtered E_ind + view depth (no other
                                         // pass runs with it)
 #define BIND_IMG_TEMPORAL_NORMAL    1   // rgba16f, the normals and history lengths it writes
+#define BIND_IMG_REUSE_TARGET       0   // rgba16f, trace reuse's result (no other pass runs
+                                        // with it)
 
 // Faces of an anisotropic voxel: VOXEL_FACE_POS_X is the voxel as seen from +x (by a cone
 // travelling towards -x), face f in x-slab f of the directional textures.
@@ -139,6 +147,7 @@
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
 #define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
 #define TEMPORAL_LOCAL_SIZE         8   // the temporal filter runs 8x8 texel groups
+#define TRACE_REUSE_LOCAL_SIZE      8   // trace reuse runs 8x8 texel groups
 
 #define ATLAS_SENDER_BLOCK          16  // texels per block of the sender table's row prefix sums
 #define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
@@ -202,6 +211,15 @@
 #define LOC_TEMPORAL_PREVIOUS_VIEW  21  // mat4, world -> camera of the previous frame
 #define LOC_TEMPORAL_PARAMETERS     22  // vec4, x = blend weight of the new frame, y = 1 when
                                         // a history exists, z = 1 to clamp the history
+#define LOC_CONE_TRACE_OFFSET       23  // vec2, NDC shift that puts a pixel of a strided trace
+                                        // on the centre of the pixel it stands for
+#define LOC_CONE_TRACE_PATTERN      24  // ivec3, x = stride s, yz = which pixel of each s x s
+                                        // block this trace covers (1, 0, 0: every pixel)
+#define LOC_REUSE_PREVIOUS_VIEW_PROJECTION 25 // mat4, world -> clip of the previous frame
+#define LOC_REUSE_PREVIOUS_VIEW     26  // mat4, world -> camera of the previous frame
+#define LOC_REUSE_PHASE             27  // ivec4, xy = the pixel of each 2x2 block traced this
+                                        // frame, z = 1 when a history exists, w = the stride
+                                        // traced (1: every pixel)
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]

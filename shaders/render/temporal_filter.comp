@@ -6,6 +6,7 @@
 // neighbourhood, so light that changed (a moving object) cannot linger as a trail.
 // A texel's first frames average uniformly (weight 1/n) until n reaches 1/blend, so newly
 // seen surfaces converge as fast as a plain mean would.
+#include "../common/bilinear_taps.glsl"
 #include "../common/frame.glsl"
 
 layout(local_size_x = TEMPORAL_LOCAL_SIZE, local_size_y = TEMPORAL_LOCAL_SIZE) in;
@@ -63,20 +64,17 @@ vec3 surfaceNormal(ivec2 texel, vec3 centre, float depth, ivec2 size) {
 // each only where it saw the same surface. w = the history length, 0 = none.
 vec4 reprojectedHistory(vec2 uv, float expectedDepth, vec3 normal, out vec3 irradiance) {
     ivec2 size = textureSize(history, 0);
-    vec2 p = uv * vec2(size) - 0.5;
-    vec2 f = fract(p);
-    ivec2 base = ivec2(floor(p));
+    BilinearTaps taps = bilinearTaps(uv, size);
     vec3 sum = vec3(0.0);
     float frames = 0.0, weightSum = 0.0;
     for (int i = 0; i < 4; ++i) {
-        ivec2 o = ivec2(i & 1, i >> 1);
-        ivec2 t = base + o;
-        if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
+        ivec2 t = tapTexel(taps, i);
+        if (!tapInside(t, size)) continue;
         vec4 h = texelFetch(history, t, 0);
         vec4 hn = texelFetch(historyNormal, t, 0);
         if (h.a <= 0.0 || abs(h.a - expectedDepth) > kDepthTolerance * expectedDepth) continue;
         if (dot(hn.xyz, normal) < kNormalTolerance) continue;
-        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y) + 1e-4;
+        float w = tapWeight(taps, i);
         sum += w * h.rgb;
         frames += w * hn.w;
         weightSum += w;

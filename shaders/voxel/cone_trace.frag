@@ -12,6 +12,10 @@ in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
 
+// A strided trace (TraceReusePass.h) covers pixel (stride x + y, stride y + z) of the full
+// trace with its pixel (x, y): the ring's dither follows the full trace's pixel.
+layout(location = LOC_CONE_TRACE_PATTERN) uniform ivec3 tracePattern;
+
 void main() {
     GpuMaterial m = materials[drawMaterial];
     if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
@@ -35,7 +39,7 @@ void main() {
     if (voxel.smoothing.y != 0.0) {
         const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
                                           3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
-        ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
+        ivec2 cell = (ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz) & 3;
         ringTurn = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 * (PI / 4.0);
     }
     outIndirect = vec4(coneIrradiance(origin, n, ringTurn, voxel.trace.y), viewDepth);

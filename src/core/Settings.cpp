@@ -162,6 +162,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.voxel.injectFragmentMean; }),
         floatSetting("voxel.trace_scale", "cone-trace resolution per axis / output resolution",
                 0.0625f, 1.0f, [](Settings& s) -> float& { return s.voxel.traceScale; }),
+        boolSetting("voxel.trace_reuse",
+                "trace one pixel of each 2x2 block per frame while the voxels' light stands "
+                "still, the other three reprojected from the last frames",
+                [](Settings& s) -> bool& { return s.voxel.traceReuse; }),
         floatSetting("voxel.max_distance", "cone length in metres (0 = to the coarsest level's edge)",
                 0.0f, 1e6f, [](Settings& s) -> float& { return s.voxel.maxDistance; }),
         floatSetting("voxel.extent",

@@ -37,6 +37,9 @@ struct VoxelSettings {
     bool injectFragmentMean = false;  // voxel.inject_fragment_mean: the thesis' mean over
                                       // fragments instead of flux / surface area
     float traceScale = 0.5f;      // voxel.trace_scale: cone-trace resolution / output resolution
+    bool traceReuse = true;       // voxel.trace_reuse: trace one pixel of each 2x2 block per
+                                  // frame while the voxels' light stands still, the others
+                                  // reprojected from the previous frames (TraceReusePass.h)
     float maxDistance = 0.0f;     // voxel.max_distance: metres; 0 = edge of the coarsest level
     float extent = 0.0f;          // voxel.extent: finest level edge (m); 0 = from the scene
     bool coverageMaxAxis = true;  // voxel.coverage_max_axis: coarse coverage from the most

@@ -18,7 +18,8 @@ bool ConeTracePass::init(gl::ShaderLibrary& shaders, std::string& error) {
 }
 
 void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
-    mTarget.resize(out.size);
+    const int stride = out.pattern.stride;
+    mTarget.resize((out.size + stride - 1) / stride);
     mSize = mTarget.size();
     gl::GpuScope scope(profiler, "voxel/trace");
     mTarget.bind();
@@ -29,12 +30,22 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, in.frameUniforms.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
+    const VoxelTextures& voxels = in.textures;
+    const GLuint program = mPrograms.id({voxels.resolution, voxels.levels, voxels.anisotropic});
+    // Pixel x of the strided image stands for pixel stride x + phase of the whole trace:
+    // shifting NDC by (1 - (2 phase + 1) / stride) / size puts its centre on that pixel's.
+    const glm::vec2 offset =
+            (1.0f - (2.0f * glm::vec2(out.pattern.phase) + 1.0f) / float(stride)) /
+            glm::vec2(mSize);
+    for (GLuint p : {program, mDepthProgram.id()}) {
+        glProgramUniform2f(p, LOC_CONE_TRACE_OFFSET, offset.x, offset.y);
+    }
     // Depth first, so that only the visible surface of each pixel traces its cones: without
     // it every surface drawn before the one in front traced 9 cones for nothing.
     in.scene.drawDepthPrepass(mDepthProgram.id());
-    const VoxelTextures& voxels = in.textures;
-    GLuint program = mPrograms.id({voxels.resolution, voxels.levels, voxels.anisotropic});
     glUseProgram(program);
+    glProgramUniform3i(program, LOC_CONE_TRACE_PATTERN, stride, out.pattern.phase.x,
+            out.pattern.phase.y);
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.textures.albedo.id());
     glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.textures.irradiance.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.textures.normal.id());

@@ -3,8 +3,9 @@
 // cones through the cascade, writing indirect irradiance E_ind (W/m^2). A depth pre-pass
 // leaves the tracing to the visible surface of each pixel.
 // Inputs : GpuScene, frame UBO (camera), VoxelUniforms, VoxelTextures (sampled, filtered).
-// Outputs: indirect(), RGBA16F at Outputs::size: rgb = E_ind, a = view depth (m); cleared to
-//          0 where no surface.
+// Outputs: indirect(), RGBA16F at Outputs::size / stride: rgb = E_ind, a = view depth (m);
+//          cleared to 0 where no surface. A stride of 2 traces one pixel of each 2x2 block
+//          (TraceReusePass.h fills in the others).
 #pragma once
 
 #include "gi/voxel/VoxelShape.h"
@@ -27,8 +28,16 @@ public:
         const VoxelTextures& textures;     // albedo, irradiance, normal, pyramid (and
                                            // directional, anisotropic); propagated
     };
+    // Which pixels of the trace this pass covers: pixel (stride x + phase.x, stride y +
+    // phase.y) of an image of Outputs::size, as pixel (x, y) of indirect().
+    struct Pattern {
+        int stride = 1;
+        glm::ivec2 phase{0};
+    };
     struct Outputs {
-        glm::ivec2 size;                   // pixels of indirect(); reallocated when it changes
+        glm::ivec2 size;                   // pixels of the whole trace (a multiple of the
+                                           // stride); indirect() is this / stride
+        Pattern pattern{};
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);

@@ -25,7 +25,7 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
            mDirectional.init(shaders, error) &&
            mPyramid.init(shaders, error) &&
            mTrace.init(shaders, error) &&
-           mFilter.init(shaders, error) &&
+           mReuse.init(shaders, error) && mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
 }
 
@@ -237,12 +237,29 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
 }
 
 void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
-    const glm::ivec2 traceSize = glm::max(
+    glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
-    mTrace.execute({in.scene, in.frameUniforms, mUniforms, mTextures}, {traceSize}, profiler);
-    if (mSettings.filterRadius > 0) {
-        mFilter.execute({mTrace.indirect(), mUniforms}, {mTrace.size()}, profiler);
+    const ConeTracePass::Inputs traceInputs{in.scene, in.frameUniforms, mUniforms, mTextures};
+    if (mSettings.traceReuse) {
+        traceSize = (traceSize + 1) / 2 * 2;
+        // A frame whose voxels were lit anew traces every pixel, so a changed scene never
+        // shows light from before the change; while the light stands still, a quarter.
+        const bool reuse = mReuse.hasHistory() && mReuse.size() == traceSize &&
+                           mTracedContent == mContentVersion;
+        // Diagonal neighbours first: two frames cover the blocks evenly.
+        constexpr glm::ivec2 kPhases[4] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+        const glm::ivec2 phase = reuse ? kPhases[mReusePhase++ % 4] : glm::ivec2(0);
+        const int stride = reuse ? 2 : 1;
+        mTrace.execute(traceInputs, {traceSize, {stride, phase}}, profiler);
+        mReuse.execute({in.scene, in.frameUniforms, in.camera, mTrace.indirect(), stride, phase},
+                {traceSize}, profiler);
+        mTracedContent = mContentVersion;
+        mQuarterTraced = reuse;
+    } else {
+        mTrace.execute(traceInputs, {traceSize}, profiler);
     }
+    const gl::Texture& traced = mSettings.traceReuse ? mReuse.result() : mTrace.indirect();
+    if (mSettings.filterRadius > 0) mFilter.execute({traced, mUniforms}, {traceSize}, profiler);
 
     mShowDebug = in.debugView != DebugView::None;
     if (mShowDebug) {
@@ -258,8 +275,9 @@ void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profil
 
 GiOutputs VoxelizationManager::outputs() const {
     GiOutputs out;
-    out.indirect = mSettings.filterRadius > 0 ? &mFilter.result() : &mTrace.indirect();
-    out.size = mTrace.size();
+    const gl::Texture& traced = mSettings.traceReuse ? mReuse.result() : mTrace.indirect();
+    out.indirect = mSettings.filterRadius > 0 ? &mFilter.result() : &traced;
+    out.size = mSettings.traceReuse ? mReuse.size() : mTrace.size();
     out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
     return out;
 }
@@ -277,8 +295,8 @@ std::string VoxelizationManager::status() const {
     std::snprintf(line, sizeof line, "voxels %d^3 x %d level%s, finest %.3g m, coarsest %.3g m, trace %dx%d",
             mVolume.resolution(), mVolume.levels(), mVolume.levels() == 1 ? "" : "s",
             double(mVolume.voxelSize(0)),
-            double(mVolume.voxelSize(mVolume.levels() - 1)), mTrace.size().x, mTrace.size().y);
-    return line;
+            double(mVolume.voxelSize(mVolume.levels() - 1)), outputs().size.x, outputs().size.y);
+    return std::string(line) + (mQuarterTraced ? ", a quarter traced" : "");
 }
 
 } // namespace gi::voxel

@@ -7,13 +7,16 @@
 //     injected or propagated: only the cone trace runs;
 //   - a scene with animated instances voxelizes its static geometry once per placement
 //     (StaticVoxelCache) and, on every frame they have moved, only the animated instances,
-//     then injects the lights (a paused animation costs what a static scene does).
+//     then injects the lights (a paused animation costs what a static scene does);
+//   - with voxel.trace_reuse (the default), while the voxels' light stands still each frame
+//     traces one pixel of every 2x2 block and reprojects the others (TraceReusePass).
 #pragma once
 
 #include "gi/GiTechnique.h"
 #include "gi/voxel/BouncePass.h"
 #include "gi/voxel/CascadeVolume.h"
 #include "gi/voxel/ConeTracePass.h"
+#include "gi/voxel/TraceReusePass.h"
 #include "gi/voxel/DirectionalVoxelsPass.h"
 #include "gi/voxel/IndirectFilterPass.h"
 #include "gi/voxel/InjectPass.h"
@@ -86,6 +89,9 @@ private:
     std::uint64_t mContentGeometry = 0;
     std::uint64_t mContentVersion = 0;
     std::uint64_t mReusedFrames = 0;
+    std::uint64_t mTracedContent = 0;   // mContentVersion of the last frame traced
+    unsigned mReusePhase = 0;           // frames traced at a quarter, picks the pixel
+    bool mQuarterTraced = false;        // this frame traced a quarter of the pixels
 
     VoxelizePass mVoxelize;
     InjectPass mInject;
@@ -94,6 +100,7 @@ private:
     DirectionalVoxelsPass mDirectional;
     RadiancePyramidPass mPyramid;
     ConeTracePass mTrace;
+    TraceReusePass mReuse;
     IndirectFilterPass mFilter;
     VoxelDebugViewPass mDebugView;
 };
