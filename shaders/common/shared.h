@@ -37,6 +37,8 @@
 #define BIND_SSBO_LINESPACE_OCCUPANCY 14 // uint[] bits, build only: per N-tree level l = 0..d,
                                         // (N^l)^3 cells, x fastest; level d = the leaf voxels
 #define BIND_SSBO_VPLS              16  // GpuVpl[], the virtual point lights of gi/vpl
+#define BIND_SSBO_VPL_BOUNCES       17  // GpuVpl[], vpl.bounces=2: one per bounce ray, where it
+                                        // stopped; flux 0 = it left the scene
 #define BIND_SSBO_LINESPACE_INPUT   15  // build only: vec4[3 per triangle] world corners
                                         // (voxelization), or uvec4 (level, cell.xyz) per node
                                         // (line-space bits)
@@ -161,6 +163,7 @@
 #define VPL_TILE                    4   // interleaved sampling: 4x4 pixels, 16 VPL subsets
 #define VPL_VISIBILITY_NONE         0   // VPLs are never occluded
 #define VPL_VISIBILITY_CASCADE      1   // segment march through the voxel occupancy
+#define VPL_BOUNCE_LOCAL_SIZE       64  // the VPL bounce rays run 64 per work group
 
 // Vertex attribute locations of the scene's vertex buffer.
 #define ATTR_POSITION               0   // vec3, world space, metres
@@ -202,6 +205,7 @@
 #define LOC_TEMPORAL_PREVIOUS_VIEW  21  // mat4, world -> camera of the previous frame
 #define LOC_TEMPORAL_PARAMETERS     22  // vec4, x = blend weight of the new frame, y = 1 when
                                         // a history exists, z = 1 to clamp the history
+#define LOC_VPL_BOUNCE_COUNTS       23  // ivec2, x = first-generation VPLs, y = bounce rays
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]
