@@ -37,6 +37,8 @@
 #define BIND_SSBO_LINESPACE_OCCUPANCY 14 // uint[] bits, build only: per N-tree level l = 0..d,
                                         // (N^l)^3 cells, x fastest; level d = the leaf voxels
 #define BIND_SSBO_VPLS              16  // GpuVpl[], the virtual point lights of gi/vpl
+#define BIND_SSBO_VPL_BOUNCES       17  // GpuVpl[], vpl.bounces=2: one per bounce ray, where it
+                                        // stopped; flux 0 = it left the scene
 #define BIND_SSBO_LINESPACE_INPUT   15  // build only: vec4[3 per triangle] world corners
                                         // (voxelization), or uvec4 (level, cell.xyz) per node
                                         // (line-space bits)
@@ -170,6 +172,7 @@
 #define VPL_TILE                    4   // interleaved sampling: 4x4 pixels, 16 VPL subsets
 #define VPL_VISIBILITY_NONE         0   // VPLs are never occluded
 #define VPL_VISIBILITY_CASCADE      1   // segment march through the voxel occupancy
+#define VPL_BOUNCE_LOCAL_SIZE       64  // the VPL bounce rays run 64 per work group
 
 // Vertex attribute locations of the scene's vertex buffer.
 #define ATTR_POSITION               0   // vec3, world space, metres
@@ -211,13 +214,14 @@
 #define LOC_TEMPORAL_PREVIOUS_VIEW  21  // mat4, world -> camera of the previous frame
 #define LOC_TEMPORAL_PARAMETERS     22  // vec4, x = blend weight of the new frame, y = 1 when
                                         // a history exists, z = 1 to clamp the history
-#define LOC_CONE_TRACE_OFFSET       23  // vec2, NDC shift that puts a pixel of a strided trace
+#define LOC_VPL_BOUNCE_COUNTS       23  // ivec2, x = first-generation VPLs, y = bounce rays
+#define LOC_CONE_TRACE_OFFSET       24  // vec2, NDC shift that puts a pixel of a strided trace
                                         // on the centre of the pixel it stands for
-#define LOC_CONE_TRACE_PATTERN      24  // ivec3, x = stride s, yz = which pixel of each s x s
+#define LOC_CONE_TRACE_PATTERN      25  // ivec3, x = stride s, yz = which pixel of each s x s
                                         // block this trace covers (1, 0, 0: every pixel)
-#define LOC_REUSE_PREVIOUS_VIEW_PROJECTION 25 // mat4, world -> clip of the previous frame
-#define LOC_REUSE_PREVIOUS_VIEW     26  // mat4, world -> camera of the previous frame
-#define LOC_REUSE_PHASE             27  // ivec4, xy = the pixel of each 2x2 block traced this
+#define LOC_REUSE_PREVIOUS_VIEW_PROJECTION 26 // mat4, world -> clip of the previous frame
+#define LOC_REUSE_PREVIOUS_VIEW     27  // mat4, world -> camera of the previous frame
+#define LOC_REUSE_PHASE             28  // ivec4, xy = the pixel of each 2x2 block traced this
                                         // frame, z = 1 when a history exists, w = the stride
                                         // traced (1: every pixel)
 

@@ -248,6 +248,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.vpl.interleave; }),
         intSetting("vpl.rsm_resolution", "pixels per side of each reflective shadow map view", 8,
                 2048, [](Settings& s) -> int& { return s.vpl.rsmResolution; }),
+        intSetting("vpl.bounces",
+                "bounces the VPLs carry: 2 adds VPLs where rays from the first ones meet the "
+                "voxels (a share of vpl.count)",
+                1, 2, [](Settings& s) -> int& { return s.vpl.bounces; }),
         boolSetting("gi.temporal_filter",
                 "blend the indirect light with earlier frames reprojected into this view, "
                 "history rejected by depth and normal",

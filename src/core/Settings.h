@@ -95,6 +95,7 @@ struct VplSettings {
     int visibility = 1;           // vpl.visibility: VPL_VISIBILITY_* (0 none, 1 cascade)
     bool interleave = true;       // vpl.interleave: 4x4 tiles, each pixel 1/16 of the VPLs
     int rsmResolution = 128;      // vpl.rsm_resolution: pixels per side of a light's RSM view
+    int bounces = 1;              // vpl.bounces: 2 adds VPLs where the first ones' light lands
     bool operator==(const VplSettings&) const = default;
 };
 

@@ -209,7 +209,8 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     }
     const bool needsOccupancy = voxelShadows() ||
             (mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_VOXEL) ||
-            (mMode == GiMode::Vpl && mSettings.vpl.visibility == VPL_VISIBILITY_CASCADE);
+            (mMode == GiMode::Vpl && (mSettings.vpl.visibility == VPL_VISIBILITY_CASCADE ||
+                                             mSettings.vpl.bounces > 1));
     if (!needsOccupancy) mOccupancy.reset();
     const std::optional<OccupancyVolume> occupancy =
             needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;

@@ -325,5 +325,15 @@ TEST(RenderCommand, HelpListsEverySettingWithDefault) {
     }
 }
 
+// vpl.bounces takes 1 or 2: no other count of VPL generations exists to honour.
+TEST(RenderCommand, VplBouncesRefusesOtherCounts) {
+    const std::string dir = makeTempDir("render-vpl-bounces");
+    for (const char* bounces : {"0", "3", "-1", "two"}) {
+        expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode",
+                                   "vpl", "--set", std::string("vpl.bounces=") + bounces}),
+                "vpl.bounces", {dir + "/a.png"});
+    }
+}
+
 } // namespace
 } // namespace gi::test

@@ -1,5 +1,5 @@
-// Further bounces of indirect light (gi.bounces) in voxel and atlas GI, on the closed white
-// box (assets/scene_suite): a point light in a closed 2 m box of albedo 0.8, where every
+// Further bounces of indirect light (gi.bounces) in voxel and atlas GI, and vpl.bounces in VPL
+// GI, on the closed white box (assets/scene_suite): a point light in a closed 2 m box of albedo 0.8, where every
 // bounce lands on the walls again. Mean over the walls, bounce k adds rho^k of the direct
 // irradiance, so two bounces hold 1 + rho = 1.8 times the indirect light of one (the camera
 // sees part of the walls, and the higher bounces spread more evenly than the first, so a
@@ -54,8 +54,10 @@ protected:
         const scene::Scene scene = loadTestScene("assets/scene_suite/closed_white_box.gltf");
         settings.specular = 0.0f;
         settings.giBounces = 1;
+        settings.vpl.bounces = 1;
         const core::Image one = indirect(scene, settings, mode, frames);
         settings.giBounces = 2;
+        settings.vpl.bounces = 2;
         const core::Image two = indirect(scene, settings, mode, frames);
         ReferenceSettings referenceSettings;
         referenceSettings.spp = 32;
@@ -88,6 +90,10 @@ TEST_F(BounceGpuTest, AtlasSecondGatherInTheClosedWhiteBox) {
     settings.atlas.cache = false;
     settings.plan = PLAN_FIXED;
     checkSecondBounce(render::GiMode::Atlas, settings, 8);
+}
+
+TEST_F(BounceGpuTest, VplSecondGenerationInTheClosedWhiteBox) {
+    checkSecondBounce(render::GiMode::Vpl, Settings{}, 1);
 }
 
 } // namespace

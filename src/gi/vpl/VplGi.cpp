@@ -33,13 +33,15 @@ bool VplGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::str
     mUniforms = gl::createBuffer(
             sizeof(shader::VplUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "vpl/uniforms");
     return mRsm.init(shaders, error) && mGBuffer.init(shaders, error) &&
-            mGather.init(shaders, error) && mFilter.init(shaders, error);
+            mGather.init(shaders, error) && mFilter.init(shaders, error) &&
+            mBounce.init(shaders, error);
 }
 
 bool VplGi::configure(const Settings& settings, std::string& error) {
     (void)error;   // the Settings table already refuses what the VPLs cannot honour
     const VplSettings& s = settings.vpl;
-    if (s.count != mSettings.count || s.rsmResolution != mSettings.rsmResolution) {
+    if (s.count != mSettings.count || s.rsmResolution != mSettings.rsmResolution ||
+            s.bounces != mSettings.bounces) {
         mSource.valid = false;
     }
     if (s.visibility != mSettings.visibility) mWarnedNoOccupancy = false;
@@ -52,20 +54,47 @@ float VplGi::clampArea() const {
     return kClampPerVplArea * mLitAreaPerVpl;
 }
 
+glm::ivec2 VplGi::generationCounts() const {
+    if (mSettings.bounces < 2) return {mSettings.count, 0};
+    const int rays = int(float(mSettings.count) * kSecondGenerationShare);
+    return {std::max(mSettings.count - rays, 1), rays};
+}
+
+void VplGi::addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
+        gl::GpuProfiler& profiler) {
+    mSecondGenerationCount = 0;
+    const int rays = generationCounts().y;
+    if (rays == 0) return;
+    if (!in.occupancy) {
+        std::fprintf(stderr, "vpl: vpl.bounces=2 needs a voxel occupancy volume and this frame "
+                             "has none; the VPLs carry one bounce\n");
+        return;
+    }
+    const std::vector<shader::GpuVpl> children =
+            mBounce.execute(vpls, rays, *in.occupancy, profiler);
+    vpls.insert(vpls.end(), children.begin(), children.end());
+    mSecondGenerationCount = int(children.size());
+}
+
 void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const std::vector<scene::LightView> views =
             scene::lightViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
     const std::vector<RsmTexel> texels =
             mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
-    std::vector<shader::GpuVpl> vpls = drawVpls(texels, mSettings.count);
-    mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(mSettings.count);
+    const int firstGeneration = generationCounts().x;
+    std::vector<shader::GpuVpl> vpls = drawVpls(texels, firstGeneration);
+    mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(firstGeneration);
+    addSecondGeneration(vpls, in, profiler);
     mVplCount = int(vpls.size());
     // Keep a buffer of at least one VPL so the gather's binding is always valid.
     if (vpls.empty()) vpls.push_back({});
     mVpls = gl::createBuffer(vpls.size() * sizeof(shader::GpuVpl), vpls.data(), 0, "vpl/vpls");
-    mSource = {&in.scene, in.lights, in.scene.geometryVersion(), true};
-    std::fprintf(stderr, "vpl: %d VPLs from %zu lit RSM texels, %.4g m^2 per VPL, clamp B %.4g m^2\n",
-            mVplCount, texels.size(), double(mLitAreaPerVpl), double(clampArea()));
+    mSource = {&in.scene, in.lights, in.scene.geometryVersion(),
+            in.occupancy ? in.occupancy->version : 0, true};
+    std::fprintf(stderr, "vpl: %d VPLs (%d of the second generation) from %zu lit RSM texels, "
+                         "%.4g m^2 per VPL, clamp B %.4g m^2\n",
+            mVplCount, mSecondGenerationCount, texels.size(), double(mLitAreaPerVpl),
+            double(clampArea()));
 }
 
 const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
@@ -90,7 +119,9 @@ void VplGi::writeUniforms(bool cascade) {
 
 void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const bool stale = !mSource.valid || mSource.scene != &in.scene ||
-            mSource.lights != in.lights || mSource.geometryVersion != in.scene.geometryVersion();
+            mSource.lights != in.lights || mSource.geometryVersion != in.scene.geometryVersion() ||
+            (mSettings.bounces > 1 && in.occupancy &&
+                    mSource.occupancyVersion != in.occupancy->version);
     if (stale) resample(in, profiler);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     writeUniforms(occupancy != nullptr);
@@ -112,7 +143,11 @@ std::string VplGi::status() const {
     const char* visibility = mSettings.visibility == VPL_VISIBILITY_CASCADE ? "cascade" : "none";
     return "vpl " + std::to_string(mVplCount) + " VPLs, " +
            (mSettings.interleave ? "4x4 tiles" : "every VPL per pixel") + ", visibility " +
-           visibility + ", B " + std::to_string(clampArea()) + " m^2";
+           visibility + ", B " + std::to_string(clampArea()) + " m^2" +
+           (mSettings.bounces > 1
+                           ? ", 2 bounces (" + std::to_string(mSecondGenerationCount) +
+                                     " second-generation VPLs)"
+                           : "");
 }
 
 } // namespace gi::vpl

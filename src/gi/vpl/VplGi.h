@@ -3,6 +3,9 @@
 // geometry change:
 //   1. reflective shadow maps of every light (ReflectiveShadowMapPass through scene/LightViews.h),
 //   2. vpl.count VPLs drawn from their lit texels in proportion to flux (VplSampler);
+//      with vpl.bounces=2, a share of the count (kSecondGenerationShare) are instead rays from
+//      these VPLs through the voxel occupancy, each hit a VPL of the flux reflected there
+//      (VplBouncePass); the gather treats both generations alike;
 // every frame:
 //   3. the camera's G-buffer (VplGBufferPass),
 //   4. the gather (VplGatherPass): E_ind = sum phi/pi V cos cos / max(B, r^2), each pixel of a
@@ -10,7 +13,7 @@
 //      (vpl.visibility=cascade) or 1,
 //   5. the geometry-aware merge of the tiles (VplFilterPass) -> screen-space E_ind.
 // vpl.clamp = 0 takes B = kClampPerVplArea x the surface area one VPL stands for (the area the
-// most widely lit light reaches, over vpl.count): the 1/r^2 spike is cut where one VPL no
+// most widely lit light reaches, over the first generation's count): the 1/r^2 spike is cut where one VPL no
 // longer stands for the light around it, which scales with the scene and with the VPL count
 // (a fraction of the scene's diagonal clamped a 40 m atrium over 1.2 m and lost a fifth of
 // its indirect light); results-vpl.md measures what the clamp costs in energy.
@@ -18,6 +21,7 @@
 
 #include "gi/GiTechnique.h"
 #include "gi/vpl/ReflectiveShadowMapPass.h"
+#include "gi/vpl/VplBouncePass.h"
 #include "gi/vpl/VplFilterPass.h"
 #include "gi/vpl/VplGBufferPass.h"
 #include "gi/vpl/VplGatherPass.h"
@@ -28,6 +32,9 @@ class VplGi final : public GiTechnique {
 public:
     // B over the lit area per VPL when vpl.clamp = 0.
     static constexpr float kClampPerVplArea = 0.25f;
+    // The share of vpl.count that vpl.bounces=2 spends on second-generation rays
+    // (results-vpl.md measures the split).
+    static constexpr float kSecondGenerationShare = 0.5f;
 
     const char* name() const override { return "vpl"; }
     bool init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) override;
@@ -47,10 +54,15 @@ private:
         const scene::GpuScene* scene = nullptr;
         std::vector<scene::Light> lights;
         std::uint64_t geometryVersion = 0;
+        std::uint64_t occupancyVersion = 0;   // what the second generation was traced through
         bool valid = false;
     };
 
     void resample(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    // vpl.count split between the generations: {first-generation VPLs, bounce rays}.
+    glm::ivec2 generationCounts() const;
+    void addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
+            gl::GpuProfiler& profiler);
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
     void writeUniforms(bool cascade);
 
@@ -58,6 +70,7 @@ private:
     float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
     Source mSource;
     int mVplCount = 0;
+    int mSecondGenerationCount = 0;
     bool mWarnedNoOccupancy = false;
     bool mHasOutput = false;
 
@@ -65,6 +78,7 @@ private:
     gl::Buffer mUniforms;
     ReflectiveShadowMapPass mRsm;
     VplGBufferPass mGBuffer;
+    VplBouncePass mBounce;
     VplGatherPass mGather;
     VplFilterPass mFilter;
 };
