@@ -40,7 +40,7 @@ SECTION_END = "<!-- bench_peer.py: end -->"
 def default_peer_source():
     """$VOXATLAS_PEER, else shared/peers/friduric beside the checkout or one level up."""
     candidates = [os.path.join(common.ROOT, *up, "shared", "peers", "friduric")
-                  for up in ((".."), ("..", ".."))]
+                  for up in (("..",), ("..", ".."))]
     found = [c for c in candidates if os.path.exists(os.path.join(c, "build.sh"))]
     return os.environ.get("VOXATLAS_PEER", found[0] if found else candidates[0])
 
