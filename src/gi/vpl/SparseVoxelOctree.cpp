@@ -222,7 +222,8 @@ std::vector<glm::uvec3> SparseVoxelOctree::readFragmentLeaves() const {
     std::vector<glm::uvec3> leaves;
     leaves.reserve(packed.size());
     for (const std::uint32_t p : packed) {
-        leaves.emplace_back(p & mask, (p >> SVO_COORD_BITS) & mask, (p >> (2 * SVO_COORD_BITS)) & mask);
+        leaves.emplace_back(p & mask, (p >> SVO_COORD_BITS) & mask,
+                (p >> (2 * SVO_COORD_BITS)) & mask);
     }
     return leaves;
 }

@@ -11,7 +11,9 @@ namespace gi::vpl {
 
 class SvoVisibility {
 public:
-    bool init(gl::ShaderLibrary& shaders, std::string& error) { return mOctree.init(shaders, error); }
+    bool init(gl::ShaderLibrary& shaders, std::string& error) {
+        return mOctree.init(shaders, error);
+    }
     // Refuses a vpl.svo_resolution that is not a power of two (one line in `error`).
     static bool validate(const VplSettings& settings, std::string& error);
     // The octree for this frame, rebuilt if stale; nullptr when the last build was refused
