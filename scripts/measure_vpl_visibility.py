@@ -3,9 +3,11 @@
 suite's Cornell variants, two_rooms_thin_wall (light leaking through a thin wall) and Sponza
 under a sun: relative RMSE, energy, the gather pass's time, the time and memory of what the
 visibility is built from (the cascade's voxel occupancy, or the octree's fragment list and
-levels), and the octree's resolution on three scenes.
+levels), the octree's resolution on three scenes, and the light each visibility leaks into
+two_rooms_thin_wall's dark room (its camera 1, where the path tracer sees none).
 
     /usr/bin/python3 scripts/measure_vpl_visibility.py [--size 96] [--bin build/voxatlas]
+        [--tables visibility,resolution,leak]
 
 Prints the Markdown tables docs/results-vpl.md quotes and writes the Cornell box's and
 Sponza's renders with each visibility to docs/images/vpl/. References come from the disk
@@ -85,17 +87,34 @@ def resolution_table(args, resolutions=(64, 128, 256)):
     return lines
 
 
+def leak_table(args):
+    """The dark room's mean indirect irradiance over the lit room's (camera 0, the path
+    tracer's): what leaks through the wall, one finest voxel of the adaptive plan thick."""
+    scene = os.path.join(mc.ROOT, "assets", "scene_suite", "two_rooms_thin_wall.gltf")
+    lit, _ = reference(scene, args.size)
+    lines = ["| two_rooms_thin_wall, dark room | indirect light / the lit room's |",
+             "| --- | --- |"]
+    dark, _ = reference(scene, args.size, ("--camera", "1"))
+    lines.append(f"| path tracer | {dark.mean() / lit.mean():.5f} |")
+    for visibility in VISIBILITIES:
+        image, _ = render(scene, "vpl", args.size, {"vpl.visibility": visibility},
+                          ("--camera", "1"))
+        lines.append(f"| {visibility} | {image.mean() / lit.mean():.5f} |")
+    return lines
+
+
 def main():
     parser = vpl_arguments(__doc__.splitlines()[0])
-    parser.add_argument("--skip-resolutions", action="store_true",
-                        help="only the visibility table")
+    parser.add_argument("--tables", default="visibility,resolution,leak",
+                        help="which tables, comma-separated")
     args = parser.parse_args()
     mc.use_binary(args.bin)
     if args.images:
         os.makedirs(args.images, exist_ok=True)
-    print("\n".join(visibility_table(args)) + "\n")
-    if not args.skip_resolutions:
-        print("\n".join(resolution_table(args)) + "\n")
+    tables = {"visibility": visibility_table, "resolution": resolution_table,
+              "leak": leak_table}
+    for name in args.tables.split(","):
+        print("\n".join(tables[name](args)) + "\n")
 
 
 if __name__ == "__main__":
