@@ -5,6 +5,9 @@ every VPL at every pixel (time and error, same VPL count), the share of the fram
 visibility, and the energy the clamp removes (default B against a tiny one).
 
     /usr/bin/python3 scripts/measure_vpl.py [--size 96] [--bin build/voxatlas]
+        [--visibility none|cascade|svo]
+
+(scripts/measure_vpl_visibility.py compares the visibilities side by side.)
 
 Prints the Markdown tables docs/results-vpl.md quotes. References are rendered once at
 reference.spp=1024 and cached on disk (ReferenceCache); the default plan is used throughout.
@@ -47,9 +50,9 @@ def vpl_ms(report):
     return {k: v for k, v in mc.pass_medians(report).items() if k.startswith("vpl/")}
 
 
-def score_row(name, scene, size, extra, images, label=None):
+def score_row(name, scene, size, extra, images, label=None, settings=None):
     truth, mask = reference(scene, size, extra)
-    image, report = render(scene, "vpl", size, {}, extra,
+    image, report = render(scene, "vpl", size, settings or {}, extra,
                            os.path.join(images, f"vpl-{name}.png") if images else None)
     rmse, energy = mc.errors(image, truth, mask)
     return f"| {label or name} | {rmse:.3f} | {energy:.3f} |", (truth, mask)
@@ -71,14 +74,23 @@ def comparison(scene, size, truth, mask, label, variants, frames=3):
     return lines + [""] + passes
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def vpl_arguments(description):
+    """The options of the VPL measurements: binary, Sponza, image size, where renders go."""
+    parser = argparse.ArgumentParser(description=description)
     mc.add_bin_argument(parser)
     mc.add_sponza_argument(parser)
     parser.add_argument("--size", type=int, default=96)
     parser.add_argument("--images", default=os.path.join(mc.IMAGES, "vpl"),
                         help="where the vpl renders are written ('' = nowhere)")
+    return parser
+
+
+def main():
+    parser = vpl_arguments(__doc__.splitlines()[0])
+    parser.add_argument("--visibility", choices=["none", "cascade", "svo"], default="cascade",
+                        help="vpl.visibility of the accuracy table")
     args = parser.parse_args()
+    visibility = {"vpl.visibility": args.visibility}
     mc.use_binary(args.bin)
     if args.images:
         os.makedirs(args.images, exist_ok=True)
@@ -88,11 +100,12 @@ def main():
     truths = {}
     for name in SUITE:
         scene = os.path.join(mc.ROOT, "assets", "scene_suite", name + ".gltf")
-        row, truths[name] = score_row(name, scene, args.size, (), args.images)
+        row, truths[name] = score_row(name, scene, args.size, (), args.images,
+                                      settings=visibility)
         lines.append(row)
     if os.path.exists(args.sponza):
         row, _ = score_row("sponza_sun", args.sponza, (128, 72), SPONZA_SUN, args.images,
-                           "sponza_sun (energy target 0.85-1.15)")
+                           "sponza_sun (energy target 0.85-1.15)", visibility)
         lines.append(row)
     print("\n".join(lines) + "\n")
 

@@ -11,6 +11,7 @@
 #define BIND_UBO_VOXEL              1   // VoxelUniforms: cascade placement and trace parameters
 #define BIND_UBO_ATLAS              2   // AtlasUniforms: atlas size, sample set, estimator
 #define BIND_UBO_VPL                3   // VplUniforms: VPL count, interleaving, clamp
+#define BIND_UBO_SVO                4   // SvoUniforms: the sparse voxel octree's cube and depth
 
 // Shader storage buffers.
 #define BIND_SSBO_LIGHTS            0   // GpuLight[], every light of the scene
@@ -42,6 +43,12 @@
 #define BIND_SSBO_LINESPACE_INPUT   15  // build only: vec4[3 per triangle] world corners
                                         // (voxelization), or uvec4 (level, cell.xyz) per node
                                         // (line-space bits)
+#define BIND_SSBO_SVO_NODES         18  // uint per node of the sparse voxel octree (gi/vpl):
+                                        // SVO_NODE_FLAG | index of its first of 8 children
+#define BIND_SSBO_SVO_FRAGMENTS     19  // build only: uint count, then one packed leaf voxel
+                                        // (SVO_COORD_BITS per axis) per occupied leaf
+#define BIND_SSBO_SVO_LEAF_BITS     20  // build only: uint[] one bit per leaf voxel, x fastest
+#define BIND_SSBO_SVO_BUILD         21  // build only: SvoBuildState
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -173,6 +180,17 @@
 #define VPL_VISIBILITY_NONE         0   // VPLs are never occluded
 #define VPL_VISIBILITY_CASCADE      1   // segment march through the voxel occupancy
 #define VPL_BOUNCE_LOCAL_SIZE       64  // the VPL bounce rays run 64 per work group
+#define VPL_VISIBILITY_SVO          2   // restart march through the sparse voxel octree
+
+// The sparse voxel octree (gi/vpl/SparseVoxelOctree.h, common/svo.glsl).
+#define SVO_NODE_FLAG               0x80000000u   // the node's cube holds geometry
+#define SVO_CHILD_MASK              0x7fffffffu   // first of its 8 children, 0 = none
+#define SVO_COORD_BITS              10            // leaf coordinates packed 10 bits per axis
+#define SVO_MAX_DEPTH               10            // 1024 leaves per side at most
+#define SVO_LOCAL_SIZE              64            // build passes run 64 invocations a group
+#define SVO_PASS_FLAG               0             // build pass: flag the nodes of a level
+#define SVO_PASS_ALLOCATE           1             // build pass: give flagged nodes 8 children
+#define SVO_PASS_ADVANCE            2             // build pass: the next level's range
 
 // Vertex attribute locations of the scene's vertex buffer.
 #define ATTR_POSITION               0   // vec3, world space, metres
@@ -224,6 +242,7 @@
 #define LOC_REUSE_PHASE             28  // ivec4, xy = the pixel of each 2x2 block traced this
                                         // frame, z = 1 when a history exists, w = the stride
                                         // traced (1: every pixel)
+#define LOC_SVO_LEVEL               29  // int, octree level a build pass works on (root = 0)
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]
@@ -369,6 +388,25 @@ struct VplUniforms {                    // std140
     vec4 gather;                        // x = clamp B of 1 / max(B, r^2) (m^2), y = the subset
                                         // scale (tiles^2), z = filter depth tolerance
                                         // (fraction of the depth), w = filter normal cosine
+};
+
+struct SvoUniforms {                    // std140
+    vec4 cube;                          // xyz = the octree cube's lowest corner (m), w = leaf
+                                        // voxel edge (m)
+    ivec4 shape;                        // x = leaves per side (2^depth), y = depth (levels
+                                        // below the root), z = fragment raster size (pixels),
+                                        // w = node capacity of the pool
+    vec4 march;                         // x = the ends' push off their surfaces, y = the
+                                        // segment's shrink at both ends, z = epsilon past a
+                                        // node's exit (all in leaf voxels), w = unused
+};
+
+struct SvoBuildState {                  // std430, the octree build's bookkeeping on the GPU
+    ivec4 dispatch;                     // xyz = DispatchIndirectCommand over the level being
+                                        // allocated, w = unused
+    ivec4 counts;                       // x = nodes allocated (the atomic counter), y = 1 if
+                                        // an allocation did not fit the pool, zw = unused
+    int levelStart[SVO_MAX_DEPTH + 2];  // first node of each level; levelStart[l + 1] ends l
 };
 
 struct AtlasUniforms {                  // std140

@@ -1,6 +1,5 @@
 // Visibility between a shading point and a VPL, one rule per vpl.visibility, chosen when the
-// gather is compiled (VPL_VISIBILITY = VPL_VISIBILITY_*). A sparse voxel octree would be one
-// more branch here.
+// gather is compiled (VPL_VISIBILITY = VPL_VISIBILITY_*).
 #ifndef GI_VPL_VISIBILITY_GLSL
 #define GI_VPL_VISIBILITY_GLSL
 
@@ -8,11 +7,15 @@
 
 #if VPL_VISIBILITY == VPL_VISIBILITY_CASCADE
 #include "../common/voxel_visibility.glsl"
+#elif VPL_VISIBILITY == VPL_VISIBILITY_SVO
+#include "../common/svo_visibility.glsl"
 #endif
 
 float vplVisibility(vec3 receiver, vec3 receiverNormal, vec3 light, vec3 lightNormal) {
 #if VPL_VISIBILITY == VPL_VISIBILITY_CASCADE
     return voxelTransmittance(receiver, receiverNormal, light, lightNormal);
+#elif VPL_VISIBILITY == VPL_VISIBILITY_SVO
+    return svoVisibility(receiver, receiverNormal, light, lightNormal);
 #else
     return 1.0;
 #endif

@@ -165,6 +165,10 @@ int runRender(const Config& config) {
 
     gl::GpuProfiler profiler;
     renderFrames(config, scene, camera, {width, height}, renderer, profiler);
+    if (const gi::GiTechnique* technique = renderer.technique(); technique &&
+            !technique->failure().empty()) {
+        return fail(2, technique->failure());
+    }
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
         return fail(1, gl::glErrorName(glError) + " while rendering" +
                 (glError == GL_OUT_OF_MEMORY ? ": the driver ran out of memory (lower the "

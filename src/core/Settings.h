@@ -92,7 +92,9 @@ struct VplSettings {
     int count = 1024;             // vpl.count: VPLs drawn from the reflective shadow maps
     float clamp = 0.0f;           // vpl.clamp: B of 1 / max(B, r^2) (m^2); 0 = from the scene
                                   // (VplGi.h: a fixed fraction of its diagonal, squared)
-    int visibility = 1;           // vpl.visibility: VPL_VISIBILITY_* (0 none, 1 cascade)
+    int visibility = 1;           // vpl.visibility: VPL_VISIBILITY_* (0 none, 1 cascade, 2 svo)
+    int svoResolution = 128;      // vpl.svo_resolution: octree leaves per side (power of two)
+    int svoBudgetMb = 256;        // vpl.svo_budget_mb: the octree's nodes may take this much
     bool interleave = true;       // vpl.interleave: 4x4 tiles, each pixel 1/16 of the VPLs
     int rsmResolution = 128;      // vpl.rsm_resolution: pixels per side of a light's RSM view
     int bounces = 1;              // vpl.bounces: 2 adds VPLs where the first ones' light lands

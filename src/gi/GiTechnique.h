@@ -71,6 +71,9 @@ public:
     virtual GiOutputs outputs() const = 0;
     // One line for the overlay: the state a user tunes against (resolution, progress).
     virtual std::string status() const { return ""; }
+    // Why the settings cannot be honoured for this scene, found only while rendering (a
+    // structure built from the geometry over its memory budget); empty when they can.
+    virtual std::string failure() const { return ""; }
     // How far from the camera the technique gathers light (m), for controls that scale with
     // it (the viewer's maximum cone distance keys); 0 when the technique has no such bound.
     virtual float gatherReach() const { return 0.0f; }

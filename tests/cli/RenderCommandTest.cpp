@@ -239,8 +239,22 @@ TEST(RenderCommand, VplModeRendersAndRefusesBadSettings) {
                                "--set", "vpl.clamp=-0.01"}),
             "vpl.clamp", {dir + "/a.png"});
     expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", "vpl",
-                               "--set", "vpl.visibility=svo"}),
+                               "--set", "vpl.visibility=octree"}),
             "vpl.visibility", {dir + "/a.png"});
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", "vpl",
+                               "--set", "vpl.visibility=svo", "--set", "vpl.svo_resolution=100"}),
+            "vpl.svo_resolution", {dir + "/a.png"});
+}
+
+// An octree whose nodes would not fit vpl.svo_budget_mb is refused once its leaves are known:
+// the Cornell box at 256^3 needs some 3 MiB of nodes.
+TEST(RenderCommand, VplOctreeOverItsBudgetIsRefused) {
+    const std::string dir = makeTempDir("render-vpl-svo");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode", "vpl",
+                               "--width", "16", "--height", "16", "--set", "vpl.count=16",
+                               "--set", "vpl.visibility=svo", "--set", "vpl.svo_resolution=256",
+                               "--set", "vpl.svo_budget_mb=1"}),
+            "vpl.svo_budget_mb", {dir + "/a.png"});
 }
 
 // The path tracer through the same command: an image of each component, the direct part

@@ -69,6 +69,16 @@ TEST_F(VplGpuTest, CornellIndirectMatchesPathTracer) {
     EXPECT_LT(e.relativeRmse, 0.40);
 }
 
+TEST_F(VplGpuTest, CornellIndirectWithOctreeVisibilityMatchesPathTracer) {
+    if (!mContext) GTEST_SKIP();
+    const reference::ImageErrors e = score(vplSettings(true, VPL_VISIBILITY_SVO));
+    std::printf("vpl cornell %dx%d, svo visibility: relative RMSE %.3f, energy %.3f\n", kSize,
+            kSize, e.relativeRmse, e.energyRatio);
+    EXPECT_GT(e.energyRatio, 0.85);
+    EXPECT_LT(e.energyRatio, 1.15);
+    EXPECT_LT(e.relativeRmse, 0.40);
+}
+
 TEST_F(VplGpuTest, InterleavingKeepsEveryVplsEnergy) {
     if (!mContext) GTEST_SKIP();
     const reference::ImageErrors tiled = score(vplSettings(true, VPL_VISIBILITY_NONE));

@@ -12,7 +12,10 @@ bool VplGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     if (!mUnoccluded) return false;
     mCascade = shaders.build({"vpl/gather_cascade", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
             {"VPL_VISIBILITY VPL_VISIBILITY_CASCADE"}}, error);
-    return bool(mCascade);
+    if (!mCascade) return false;
+    mOctree = shaders.build({"vpl/gather_svo", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
+            {"VPL_VISIBILITY VPL_VISIBILITY_SVO"}}, error);
+    return bool(mOctree);
 }
 
 void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
@@ -23,8 +26,12 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     }
     // The gather's own cost, apart from the filter: with cascade visibility most of it is the
     // march (results-vpl.md compares it with vpl.visibility=none).
-    gl::GpuScope scope(profiler, in.occupancy ? "vpl/gather_cascade" : "vpl/gather");
-    const GLuint program = in.occupancy ? mCascade.id() : mUnoccluded.id();
+    gl::GpuScope scope(profiler, in.occupancy ? "vpl/gather_cascade"
+                                 : in.octree  ? "vpl/gather_svo"
+                                              : "vpl/gather");
+    const GLuint program = in.occupancy ? mCascade.id()
+                           : in.octree  ? mOctree.id()
+                                        : mUnoccluded.id();
     glUseProgram(program);
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VPL, in.uniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_VPLS, in.vpls.id());
@@ -35,6 +42,7 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
     }
+    if (in.octree) in.octree->bind();
     dispatchOverPixels(mResult, size);
 }
 

@@ -1,11 +1,13 @@
 // The VPL gather (shaders/vpl/gather.comp): the indirect irradiance each VPL sends the surface
 // of each pixel, through vpl.visibility, every VPL at every pixel or one interleaved subset
 // per pixel (VplUniforms.counts.y).
-// Inputs : the G-buffer, the VPLs, VplUniforms, the voxel occupancy (cascade visibility).
+// Inputs : the G-buffer, the VPLs, VplUniforms, the voxel occupancy (cascade visibility) or
+//          the sparse voxel octree (svo visibility).
 // Outputs: result(), RGBA16F at the G-buffer's size: rgb = E_ind (W/m^2), a = view depth (m).
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/vpl/SparseVoxelOctree.h"
 #include "gi/vpl/VplGBufferPass.h"
 
 namespace gi::vpl {
@@ -17,6 +19,7 @@ public:
         const gl::Buffer& vpls;               // GpuVpl[]
         const gl::Buffer& uniforms;           // VplUniforms
         const OccupancyVolume* occupancy;     // non-null: cascade visibility
+        const SparseVoxelOctree* octree = nullptr;   // non-null: svo visibility
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
@@ -26,6 +29,7 @@ public:
 private:
     gl::ProgramRef mUnoccluded;   // vpl.visibility=none
     gl::ProgramRef mCascade;      // vpl.visibility=cascade
+    gl::ProgramRef mOctree;       // vpl.visibility=svo
     gl::Texture mResult;
     glm::ivec2 mSize{0};
 };

@@ -34,12 +34,12 @@ bool VplGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::str
             sizeof(shader::VplUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "vpl/uniforms");
     return mRsm.init(shaders, error) && mGBuffer.init(shaders, error) &&
             mGather.init(shaders, error) && mFilter.init(shaders, error) &&
-            mBounce.init(shaders, error);
+            mBounce.init(shaders, error) && mSvo.init(shaders, error);
 }
 
 bool VplGi::configure(const Settings& settings, std::string& error) {
-    (void)error;   // the Settings table already refuses what the VPLs cannot honour
     const VplSettings& s = settings.vpl;
+    if (!SvoVisibility::validate(s, error)) return false;
     if (s.count != mSettings.count || s.rsmResolution != mSettings.rsmResolution ||
             s.bounces != mSettings.bounces) {
         mSource.valid = false;
@@ -107,26 +107,33 @@ const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
     return in.occupancy;
 }
 
-void VplGi::writeUniforms(bool cascade) {
+void VplGi::writeUniforms(int visibility) {
     const int tile = mSettings.interleave ? VPL_TILE : 1;
     shader::VplUniforms u{};
-    u.counts = glm::ivec4(mVplCount, tile,
-            cascade ? VPL_VISIBILITY_CASCADE : VPL_VISIBILITY_NONE, 0);
+    u.counts = glm::ivec4(mVplCount, tile, visibility, 0);
     u.gather = glm::vec4(clampArea(), float(tile * tile), kFilterDepthTolerance,
             kFilterNormalCosine);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
 void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+    const SparseVoxelOctree* octree = nullptr;
+    if (mSettings.visibility == VPL_VISIBILITY_SVO) {
+        octree = mSvo.update(in.scene, mSettings, profiler);
+        // Refused (over vpl.svo_budget_mb): no indirect light, failure() says why.
+        mHasOutput = false;
+        if (!octree) return;
+    }
     const bool stale = !mSource.valid || mSource.scene != &in.scene ||
             mSource.lights != in.lights || mSource.geometryVersion != in.scene.geometryVersion() ||
             (mSettings.bounces > 1 && in.occupancy &&
                     mSource.occupancyVersion != in.occupancy->version);
     if (stale) resample(in, profiler);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
-    writeUniforms(occupancy != nullptr);
+    writeUniforms(occupancy ? VPL_VISIBILITY_CASCADE
+                            : octree ? VPL_VISIBILITY_SVO : VPL_VISIBILITY_NONE);
     mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
-    mGather.execute({mGBuffer, mVpls, mUniforms, occupancy}, profiler);
+    mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree}, profiler);
     mFilter.execute({mGather.result(), mGBuffer, mUniforms}, profiler);
     mHasOutput = mGBuffer.size().x > 0;
 }
@@ -140,7 +147,10 @@ GiOutputs VplGi::outputs() const {
 }
 
 std::string VplGi::status() const {
-    const char* visibility = mSettings.visibility == VPL_VISIBILITY_CASCADE ? "cascade" : "none";
+    if (!mSvo.failure().empty()) return "vpl: " + mSvo.failure();
+    const char* visibility = mSettings.visibility == VPL_VISIBILITY_CASCADE ? "cascade"
+                             : mSettings.visibility == VPL_VISIBILITY_SVO   ? "svo"
+                                                                            : "none";
     return "vpl " + std::to_string(mVplCount) + " VPLs, " +
            (mSettings.interleave ? "4x4 tiles" : "every VPL per pixel") + ", visibility " +
            visibility + ", B " + std::to_string(clampArea()) + " m^2" +

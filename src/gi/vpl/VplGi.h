@@ -10,7 +10,7 @@
 //   3. the camera's G-buffer (VplGBufferPass),
 //   4. the gather (VplGatherPass): E_ind = sum phi/pi V cos cos / max(B, r^2), each pixel of a
 //      4x4 tile using one sixteenth of the VPLs, V through the voxel occupancy
-//      (vpl.visibility=cascade) or 1,
+//      (vpl.visibility=cascade), the sparse voxel octree (svo, SvoVisibility) or 1,
 //   5. the geometry-aware merge of the tiles (VplFilterPass) -> screen-space E_ind.
 // vpl.clamp = 0 takes B = kClampPerVplArea x the surface area one VPL stands for (the area the
 // most widely lit light reaches, over the first generation's count): the 1/r^2 spike is cut where one VPL no
@@ -24,6 +24,7 @@
 #include "gi/vpl/VplBouncePass.h"
 #include "gi/vpl/VplFilterPass.h"
 #include "gi/vpl/VplGBufferPass.h"
+#include "gi/vpl/SvoVisibility.h"
 #include "gi/vpl/VplGatherPass.h"
 
 namespace gi::vpl {
@@ -42,6 +43,7 @@ public:
     void update(const GiFrameInputs& in, gl::GpuProfiler& profiler) override;
     GiOutputs outputs() const override;
     std::string status() const override;
+    std::string failure() const override { return mSvo.failure(); }
 
     // VPLs drawn at the last resampling (fewer than vpl.count only when nothing is lit).
     int vplCount() const { return mVplCount; }
@@ -64,7 +66,7 @@ private:
     void addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
             gl::GpuProfiler& profiler);
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
-    void writeUniforms(bool cascade);
+    void writeUniforms(int visibility);
 
     VplSettings mSettings;
     float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
@@ -81,6 +83,7 @@ private:
     VplBouncePass mBounce;
     VplGatherPass mGather;
     VplFilterPass mFilter;
+    SvoVisibility mSvo;
 };
 
 } // namespace gi::vpl
