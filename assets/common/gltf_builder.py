@@ -222,16 +222,18 @@ class GltfWriter:
     def add_node(self, node):
         return self._node(node)
 
-    def add_material(self, name, rgb, double_sided=False, emissive=None, emissive_strength=None):
+    def add_material(self, name, rgb, double_sided=False, emissive=None, emissive_strength=None,
+                     metallic=0.0, roughness=1.0):
         """`emissive`: the emissiveFactor (linear RGB); `emissive_strength`: its
-        KHR_materials_emissive_strength multiplier, for radiance above 1 W/(m^2 sr)."""
+        KHR_materials_emissive_strength multiplier, for radiance above 1 W/(m^2 sr);
+        `metallic`, `roughness`: the glTF factors (a diffuse dielectric by default)."""
         self.material_index[name] = len(self.doc["materials"])
         material = {
             "name": name,
             "pbrMetallicRoughness": {
                 "baseColorFactor": [rgb[0], rgb[1], rgb[2], 1.0],
-                "metallicFactor": 0.0,
-                "roughnessFactor": 1.0,
+                "metallicFactor": metallic,
+                "roughnessFactor": roughness,
             },
         }
         if double_sided:

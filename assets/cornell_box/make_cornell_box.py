@@ -109,8 +109,9 @@ def add_cornell_materials(w, double_sided=False):
         w.add_material(name, rgb, double_sided)
 
 
-def add_cornell_geometry(w, scale=1.0, texcoords=False):
-    """The five room quads and the two blocks, one mesh node each."""
+def add_cornell_geometry(w, scale=1.0, texcoords=False, block_materials=("white", "white")):
+    """The five room quads and the two blocks (short, tall: `block_materials`), one mesh node
+    each."""
     def conv(quad):
         return [cornell_to_gltf(p, scale) for p in quad]
 
@@ -133,13 +134,14 @@ def add_cornell_geometry(w, scale=1.0, texcoords=False):
 
     # Block faces face away from the block's centre.  No bottom faces: they
     # rest on the floor and are never seen.
-    for name, faces in (("short_block", CORNELL_SHORT_BLOCK), ("tall_block", CORNELL_TALL_BLOCK)):
+    blocks = (("short_block", CORNELL_SHORT_BLOCK), ("tall_block", CORNELL_TALL_BLOCK))
+    for (name, faces), material in zip(blocks, block_materials):
         quads = [conv(f) for f in faces]
         centre = mean([p for q in quads for p in q])
         m = MeshBuilder()
         for q in quads:
             m.add_quad(q, sub(mean(q), centre))
-        w.add_mesh_node(name, m, "white", texcoords)
+        w.add_mesh_node(name, m, material, texcoords)
 
 
 def cornell_light_position(scale=1.0, drop_mm=CORNELL_LIGHT_DROP_MM):

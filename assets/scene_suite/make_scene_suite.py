@@ -3,11 +3,12 @@
 
 Every file carries its own cameras and KHR_lights_punctual lights, in the units of
 docs/conventions.md (metres; W/sr for point and spot lights, W/m^2 for directional ones;
-Lambertian materials).  README.md beside this script says what each scene tests.
+Lambertian materials but one).  README.md beside this script says what each scene tests.
 
   cornell_classic         the Cornell box of ../cornell_box (same geometry, camera, light)
   cornell_double_sided    the same, every material doubleSided and TEXCOORD_0 on every
                           primitive (what Blender and most exporters write)
+  cornell_glossy          the same with the tall block a grey metal (metallic 1, roughness 0.3)
   cornell_low_light       the point light 10 % of the box height under the ceiling
   cornell_x10             the whole box x10; the light x100, so the radiance stays the same
   cornell_spot            one spot light pointing down from under the ceiling
@@ -74,6 +75,21 @@ def classic_point_light(w, scale=1.0, drop_mm=cornell.CORNELL_LIGHT_DROP_MM):
 
 def build_classic():
     return cornell_scene(classic_point_light)
+
+
+# The tall block a rough grey metal: the glossy model's test (scripts/measure_glossy.py).
+GLOSSY_METAL_RGB = (0.8, 0.8, 0.8)
+GLOSSY_METAL_ROUGHNESS = 0.3
+
+
+def build_glossy():
+    w = GltfWriter(GENERATOR)
+    cornell.add_cornell_materials(w)
+    w.add_material("metal", GLOSSY_METAL_RGB, metallic=1.0, roughness=GLOSSY_METAL_ROUGHNESS)
+    cornell.add_cornell_geometry(w, block_materials=("white", "metal"))
+    classic_point_light(w)
+    cornell.add_cornell_camera(w)
+    return w
 
 
 def build_double_sided():
@@ -248,6 +264,7 @@ def build_closed_white_box():
 SCENES = [
     ("cornell_classic", build_classic),
     ("cornell_double_sided", build_double_sided),
+    ("cornell_glossy", build_glossy),
     ("cornell_low_light", build_low_light),
     ("cornell_x10", build_x10),
     ("cornell_spot", build_spot),

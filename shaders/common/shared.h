@@ -58,6 +58,9 @@
 #define BIND_TEX_PRESENT_SOURCE     2   // RGBA32F linear radiance the viewer presents
 
 #define BIND_TEX_INDIRECT           4   // rgba16f screen-space E_ind (W/m^2), a = view depth (m)
+#define BIND_TEX_INDIRECT_SPECULAR  24  // rgba16f screen-space indirect specular radiance
+                                        // (W/(m^2 sr)), a = view depth (m); voxel GI with
+                                        // material.model=gltf, same size as BIND_TEX_INDIRECT
 #define BIND_TEX_VOXEL_ALBEDO       5   // sampler3D rgba16f, rgb = albedo x coverage, a = coverage
 #define BIND_TEX_VOXEL_IRRADIANCE   6   // sampler3D rgba16f, rgb = irradiance E (W/m^2)
 #define BIND_TEX_VOXEL_NORMAL       7   // sampler3D rgba8_snorm, xyz = mean normal, w = the
@@ -243,6 +246,8 @@
                                         // frame, z = 1 when a history exists, w = the stride
                                         // traced (1: every pixel)
 #define LOC_SVO_LEVEL               29  // int, octree level a build pass works on (root = 0)
+#define LOC_FORWARD_INDIRECT_SPECULAR 30 // int, 1: BIND_TEX_INDIRECT_SPECULAR holds voxel GI's
+                                        // specular cone (material.model=gltf)
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]
@@ -285,6 +290,11 @@
 #define MATERIAL_EMITS_AS_LIGHT     2   // its emission is an area light's (LIGHT_AREA): passes
                                         // that shade with lights must not count it again
 
+// FrameUniforms.shading.z: the material model (core/Settings.h MaterialModel).
+#define SHADING_LAMBERT             0   // Lambertian only (material.specular = 0)
+#define SHADING_PHONG               1   // Lambertian + Blinn-Phong highlight in direct light
+#define SHADING_GLTF                2   // glTF metallic-roughness (shaders/common/brdf.glsl)
+
 #define ALPHA_OPAQUE                0
 #define ALPHA_MASK                  1
 
@@ -297,7 +307,7 @@ struct FrameUniforms {                  // std140
     mat4 view;                          // world -> camera
     vec4 cameraPosition;                // xyz = world-space eye (m), w = unused
     vec4 shading;                       // x = specular strength ks, y = Blinn-Phong exponent,
-                                        // z = 1 to include specular, w = 1 to apply shadows
+                                        // z = SHADING_* model, w = 1 to apply shadows
     mat4 inverseViewProjection;         // clip -> world, for per-pixel rays
     vec4 screen;                        // xy = output size (pixels), zw = unused
     ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
@@ -343,6 +353,8 @@ struct GpuMaterial {                    // std430
     vec4 emissiveAndCutoff;             // rgb = emissive factor (linear), w = alpha cutoff
     ivec4 flags;                        // x = has base-colour texture, y = MATERIAL_* bits,
                                         // z = ALPHA_* mode, w = base-colour texcoord set (0/1)
+    vec4 metallicRoughness;             // x = metallic, y = perceptual roughness (glTF
+                                        // factors, material.model=gltf only), zw = unused
 };
 
 struct VoxelUniforms {                  // std140

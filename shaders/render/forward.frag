@@ -1,7 +1,14 @@
-// Forward pass, fragment stage: Lambertian + optional Blinn-Phong direct light from every
-// light, plus emission. Output is linear radiance (W/(m^2 sr)); alpha = 1 marks geometry.
-//   L = rho/pi * E + ks * (n+8)/(8 pi) * (N.H)^n * E + Le
-// The (n+8)/(8 pi) factor normalises the Blinn-Phong lobe so ks is an energy fraction.
+// Forward pass, fragment stage: direct light from every light, plus emission and the GI
+// technique's indirect light. Output is linear radiance (W/(m^2 sr)); alpha = 1 marks geometry.
+// Per frame.shading.z:
+//   SHADING_LAMBERT: L = rho/pi * E + Le
+//   SHADING_PHONG:   L = rho/pi * E + ks * (n+8)/(8 pi) * (N.H)^n * E + Le, in direct light
+//                    only; the (n+8)/(8 pi) factor normalises the lobe so ks is an energy
+//                    fraction
+//   SHADING_GLTF:    L = f(v, l) * E + Le (brdf.glsl); indirect irradiance reflects with the
+//                    diffuse term's weight under uniform light, and voxel GI's specular cone
+//                    (already weighted by the specular albedo) is added to it
+#include "../common/brdf.glsl"
 #include "../common/frame.glsl"
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
@@ -9,17 +16,19 @@
 #include "../common/direct_visibility.glsl"
 
 layout(binding = BIND_TEX_INDIRECT) uniform sampler2D indirectTexture;
+layout(binding = BIND_TEX_INDIRECT_SPECULAR) uniform sampler2D indirectSpecularTexture;
 layout(location = LOC_FORWARD_INDIRECT_SIZE) uniform vec2 indirectSize;   // (0, 0): none
+layout(location = LOC_FORWARD_INDIRECT_SPECULAR) uniform int hasIndirectSpecular;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outRadiance;
 
-// Indirect irradiance E_ind of this pixel's surface from the GI technique's screen-space
-// texture, which may be smaller than the output. Bilinear (the thesis) or depth-aware: the
-// four nearest texels weighted bilinearly and by how close their view depth is to this
-// pixel's, so light does not bleed across depth edges; empty texels (a = 0) never count.
-vec3 indirectIrradiance(float viewDepth) {
+// Indirect light of this pixel's surface from one of the GI technique's screen-space textures,
+// which may be smaller than the output. Bilinear (the thesis) or depth-aware: the four
+// nearest texels weighted bilinearly and by how close their view depth is to this pixel's,
+// so light does not bleed across depth edges; empty texels (a = 0) never count.
+vec3 upsampledIndirect(sampler2D indirectTexture, float viewDepth) {
     vec2 uv = gl_FragCoord.xy / frame.screen.xy;
     if (frame.counts.w == 0) return texture(indirectTexture, uv).rgb;
     vec2 p = uv * indirectSize - 0.5;
@@ -55,6 +64,8 @@ void main() {
 
     vec3 radiance = materialEmission(m, vin.texcoord0);
     float ks = frame.shading.x, shininess = frame.shading.y;
+    int model = int(frame.shading.z);
+    GltfSurface surface = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);
     uint random = hash(uint(gl_FragCoord.y) * 65536u + uint(gl_FragCoord.x));
     for (int i = 0; i < frame.counts.x; ++i) {
         vec3 e = lightIrradiance(lights[i], vin.position, n);
@@ -63,21 +74,31 @@ void main() {
         float distance;
         lightDirection(lights[i], vin.position, toLight, distance);
         e *= directVisibility(i, vin.position, n, distance, random);
+        if (model == SHADING_GLTF) {
+            radiance += gltfBrdf(surface, n, toEye, toLight) * e;
+            continue;
+        }
         radiance += baseColor.rgb / PI * e;
-        if (frame.shading.z != 0.0) {
+        if (model == SHADING_PHONG) {
             vec3 h = normalize(toLight + toEye);
             radiance += ks * (shininess + 8.0) / (8.0 * PI) * pow(max(dot(n, h), 0.0), shininess) * e;
         }
     }
+    // What uniform incident irradiance reflects, per unit of rho/pi.
+    vec3 diffuse = model == SHADING_GLTF ? diffuseIndirectWeight(surface, dot(n, toEye))
+                                         : baseColor.rgb;
     vec3 indirect = vec3(0.0);
     if (indirectSize.x > 0.0) {
         float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
-        indirect = baseColor.rgb / PI * indirectIrradiance(viewDepth);
+        indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth);
+        if (model == SHADING_GLTF && hasIndirectSpecular != 0) {
+            indirect += upsampledIndirect(indirectSpecularTexture, viewDepth);
+        }
     } else {
         // Without GI nothing tells where the sky is visible: it lights every surface as an
         // open hemisphere over a black ground would, E = pi L (1 + n.y) / 2 (exact for an
         // open floor, half for an open wall). With GI the gather sees it (cones, atlas).
-        radiance += baseColor.rgb * frame.sky.rgb * 0.5 * (1.0 + n.y);
+        radiance += diffuse * frame.sky.rgb * 0.5 * (1.0 + n.y);
     }
     if (frame.counts.y == OUTPUT_INDIRECT) radiance = indirect;
     else if (frame.counts.y == OUTPUT_FINAL) radiance += indirect;

@@ -1,6 +1,13 @@
 // Screen-space cone tracing (thesis 4.3.3.4): every visible surface point gathers its
 // indirect irradiance E_ind (W/m^2, DESIGN.md) from 9 cones through the voxel cascade
-// (cone_tracing.glsl: the cones, their weights and how they read the voxels).
+// (cone_tracing.glsl: the cones, their weights and how they read the voxels). With glossy
+// materials (SHADING_GLTF) a tenth cone follows the specular lobe's core towards the camera;
+// with the diffuse cones' mean radiance for its tails, times the lobe's split-sum albedo
+// F0 A + B, it is the indirect specular radiance (brdf.glsl: the cone's direction, its
+// aperture and share from the roughness, the albedo table).
+// Light the voxels hold is Lambertian (albedo x E / pi), so a metal seen in a mirror-like
+// surface shows its diffuse stand-in.
+#include "../common/brdf.glsl"
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "cone_tracing.glsl"
@@ -11,6 +18,7 @@ layout(early_fragment_tests) in;
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outIndirect;
+layout(location = 1) out vec4 outSpecular;   // only with SHADING_GLTF (ConeTracePass)
 
 // A strided trace (TraceReusePass.h) covers pixel (stride x + y, stride y + z) of the full
 // trace with its pixel (x, y): the ring's dither follows the full trace's pixel.
@@ -23,6 +31,7 @@ void main() {
     int level = finestLevel(vin.position);
     if (level < 0) {
         outIndirect = vec4(0.0, 0.0, 0.0, viewDepth);
+        outSpecular = vec4(0.0, 0.0, 0.0, viewDepth);
         return;
     }
     vec3 n = normalize(vin.normal);
@@ -42,5 +51,15 @@ void main() {
         ivec2 cell = (ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz) & 3;
         ringTurn = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 * (PI / 4.0);
     }
-    outIndirect = vec4(coneIrradiance(origin, n, ringTurn, voxel.trace.y), viewDepth);
+    vec3 irradiance = coneIrradiance(origin, n, ringTurn, voxel.trace.y);
+    outIndirect = vec4(irradiance, viewDepth);
+    if (int(frame.shading.z) == SHADING_GLTF) {
+        vec3 v = normalize(frame.cameraPosition.xyz - vin.position);
+        vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+        GltfSurface s = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);
+        vec3 dir = specularDominantDirection(s, n, v);
+        vec3 cone = traceCone(origin, dir, voxel.trace.y, specularConeTanHalfAngle(s));
+        vec3 incident = mix(irradiance / PI, cone, kSpecularConeShare);
+        outSpecular = vec4(incident * specularAlbedo(s, max(dot(n, v), 0.0)), viewDepth);
+    }
 }

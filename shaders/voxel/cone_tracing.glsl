@@ -193,8 +193,8 @@ bool emptyBlock(vec3 local) {
     return texelFetch(voxelPyramidTexture, ivec3(local) / kEmptyBlock, kEmptyBlockMip).a <= 0.0;
 }
 
-vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {
-    float tanHalf = voxel.trace.x;
+// Radiance seen along a cone from origin along dir whose half-angle has tangent tanHalf.
+vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
     float finest = levelVoxelSize(0);
     int coarsest = voxelLevels() - 1;
     float coarsestSize = levelVoxelSize(coarsest);
@@ -333,11 +333,12 @@ vec3 coneIrradiance(vec3 origin, vec3 n, float ringTurn, float maxDistance) {
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t);
     float cosRing = voxel.traceWeights.z, sinRing = voxel.traceWeights.w;
-    vec3 e = voxel.traceWeights.x * traceCone(origin, n, maxDistance);
+    float tanHalf = voxel.trace.x;
+    vec3 e = voxel.traceWeights.x * traceCone(origin, n, maxDistance, tanHalf);
     for (int i = 0; i < 8; ++i) {
         float phi = float(i) * (PI / 4.0) + ringTurn;
         vec3 dir = cosRing * n + sinRing * (cos(phi) * t + sin(phi) * b);
-        e += voxel.traceWeights.y * traceCone(origin, dir, maxDistance);
+        e += voxel.traceWeights.y * traceCone(origin, dir, maxDistance, tanHalf);
     }
     return PI * e;
 }

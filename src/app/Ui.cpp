@@ -92,6 +92,8 @@ void resolutionLine(const UiFrame& frame) {
 // Widgets for a few Settings; ranges are those Settings.cpp accepts for the same keys.
 bool settingsWidgets(Settings& settings) {
     bool changed = false;
+    static const char* const kModels[] = {"phong", "gltf"};
+    changed |= ImGui::Combo("material.model", &settings.materialModel, kModels, 2);
     changed |= ImGui::SliderFloat("material.specular", &settings.specular, 0.0f, 1.0f, "%.3f",
             ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("material.shininess", &settings.shininess, 1.0f, 4096.0f,

@@ -118,7 +118,17 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.depthPrepass; }),
         boolSetting("gl.debug", "log KHR_debug messages to stderr",
                 [](Settings& s) -> bool& { return s.glDebug; }),
-        floatSetting("material.specular", "Blinn-Phong specular strength ks (0 = Lambert only)",
+        choiceSetting("material.model",
+                "surface BRDF: phong = Lambertian, plus a Blinn-Phong highlight of strength "
+                "material.specular in the GPU's direct light only (the path tracer stays "
+                "Lambertian); gltf = glTF metallic-roughness (Lambert x (1 - metallic) + GGX) in "
+                "the path tracer and on the GPU: direct light in every mode, a specular cone in "
+                "voxel GI (the atlas and VPL indirect light stay diffuse)",
+                {"phong", "gltf"}, [](Settings& s) -> int& { return s.materialModel; }),
+        floatSetting("material.specular",
+                "Blinn-Phong specular strength ks; 0 = Lambert only in every model and mode (the "
+                "accuracy comparisons), with material.model=gltf any other value turns the glTF "
+                "specular on",
                 0.0f, 1.0f, [](Settings& s) -> float& { return s.specular; }),
         floatSetting("material.shininess", "Blinn-Phong exponent n", 1.0f, 4096.0f,
                 [](Settings& s) -> float& { return s.shininess; }),

@@ -119,8 +119,19 @@ struct ReferenceSettings {
     int bounces = 1;              // reference.bounces: indirect bounces (1 = direct + one bounce)
     int seed = 1;                 // reference.seed: seeds every pixel's random sequence
     int threads = 0;              // reference.threads: worker threads, 0 = all cores
+    // Not a key of its own: the material settings' glossyMaterials(), which the caller copies
+    // in (the reference cache keys glossy renders apart).
+    bool glossy = false;          // glTF metallic-roughness BRDF instead of Lambert
     bool operator==(const ReferenceSettings&) const = default;
 };
+
+// material.model: the BRDF of every surface. Phong: Lambertian (rho = base colour) in the path
+// tracer and every GPU pass, plus, on the GPU's direct light only, a Blinn-Phong highlight of
+// strength material.specular (today's look, not part of the reference). glTF: the glTF
+// metallic-roughness BRDF (Lambert x (1 - metallic) + GGX) in the path tracer, in the GPU's
+// direct light in every mode and, in voxel GI, a specular cone. material.specular = 0 turns
+// every specular term off in either model: Lambertian everywhere, the accuracy comparisons.
+enum MaterialModel : int { MATERIAL_PHONG = 0, MATERIAL_GLTF = 1 };
 
 // render.plan: where the GI resources' sizes come from (render/ResourcePlan.h).
 enum PlanMode : int { PLAN_FIXED = 0, PLAN_ADAPTIVE = 1 };
@@ -134,8 +145,10 @@ struct Settings {
     int warmupFrames = 0;       // render.warmup: frames rendered and discarded before timing
     bool glDebug = false;       // gl.debug: KHR_debug messages to stderr
     bool depthPrepass = true;   // render.depth_prepass: shade each pixel once
-    // Materials (Blinn-Phong; the specular term is extra to the Lambertian reference).
-    float specular = 0.04f;     // material.specular: ks, 0 switches the specular term off
+    // Materials (see MaterialModel).
+    int materialModel = MATERIAL_PHONG;   // material.model
+    float specular = 0.04f;     // material.specular: Blinn-Phong ks; 0 switches every specular
+                                // term off (with material.model=gltf, any other value on)
     float shininess = 64.0f;    // material.shininess: Blinn-Phong exponent n
     // Indirect light.
     int giBounces = 1;          // gi.bounces: bounces of indirect light voxel and atlas GI
@@ -151,6 +164,9 @@ struct Settings {
     float frameBudgetMs = 100.0f;  // view.frame_budget_ms: while the camera moves, the render
                                    // resolution drops to keep frames near this (0 = off)
     bool screenshotUi = false;  // view.screenshot_ui (hidden): --screenshot includes the overlay
+
+    // The glTF metallic-roughness BRDF is on (path tracer and GPU alike).
+    bool glossyMaterials() const { return materialModel == MATERIAL_GLTF && specular > 0.0f; }
 };
 
 struct SettingSpec {

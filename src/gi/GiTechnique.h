@@ -1,7 +1,8 @@
 // The interface the renderer drives for a global-illumination technique. A technique turns
 // the scene and its direct light into indirect irradiance E_ind (W/m^2) of the surface seen
 // in each pixel; the final pass multiplies it by the surface's albedo / pi (DESIGN.md:
-// L_ind = rho/pi * E_ind). Voxel cone tracing (gi/voxel) and the atlas gather (gi/atlas)
+// L_ind = rho/pi * E_ind). With glossy materials a technique may add indirect specular
+// radiance (voxel GI's specular cone). Voxel cone tracing (gi/voxel) and the atlas gather (gi/atlas)
 // implement it without knowing each other.
 #pragma once
 
@@ -53,6 +54,10 @@ struct GiOutputs {
     // pixel, a = its distance along the view axis (m) for depth-aware upsampling; 0 = empty.
     const gl::Texture* indirect = nullptr;
     glm::ivec2 size{0};                    // pixels; may be smaller than the output
+    // Screen-space indirect specular radiance at `size`, RGBA16F: rgb = L (W/(m^2 sr)) the
+    // surface reflects towards the camera, already weighted by its specular albedo, a = view
+    // depth (m); nullptr when the technique gathers diffuse light only.
+    const gl::Texture* indirectSpecular = nullptr;
     // Debug views: linear radiance to show instead of the final image (full resolution,
     // RGBA32F, alpha = coverage), or nullptr.
     const gl::Texture* debugImage = nullptr;

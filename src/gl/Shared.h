@@ -15,7 +15,7 @@ using glm::vec4;
 static_assert(sizeof(gi::shader::FrameUniforms) == 288, "FrameUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuLight) == 64, "GpuLight std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuEmitter) == 64, "GpuEmitter std430 layout drifted");
-static_assert(sizeof(gi::shader::GpuMaterial) == 48, "GpuMaterial std430 layout drifted");
+static_assert(sizeof(gi::shader::GpuMaterial) == 64, "GpuMaterial std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
 static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 6,
         "VoxelUniforms std140 layout drifted");

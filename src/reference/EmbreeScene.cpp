@@ -49,6 +49,8 @@ void copyMaterials(const scene::Scene& scene, EmbreeState& state) {
         m.mask = material.alphaMode == scene::AlphaMode::Mask;
         m.alphaCutoff = material.alphaCutoff;
         m.doubleSided = material.doubleSided;
+        m.metallic = material.metallicFactor;
+        m.roughness = material.roughnessFactor;
         state.materials.push_back(m);
     }
     state.materials.push_back(ShadingMaterial{});

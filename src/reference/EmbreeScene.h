@@ -34,6 +34,8 @@ struct ShadingMaterial {
     bool mask = false;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;   // emits from both sides (DESIGN: front side otherwise)
+    float metallic = 0.0f;      // glTF metallic-roughness (GltfBrdf.h), glossy model only
+    float roughness = 1.0f;
 };
 
 struct EmbreeState;

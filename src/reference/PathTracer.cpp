@@ -1,5 +1,6 @@
 #include "reference/PathTracer.h"
 
+#include "reference/GltfBrdf.h"
 #include "reference/LightSampling.h"
 #include "reference/SamplingMath.h"
 
@@ -19,9 +20,9 @@ constexpr float kShadowRayShortening = 1e-4f;
 } // namespace
 
 PathTracer::PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
-        const scene::CameraView& camera, int width, int height, int bounces)
+        const scene::CameraView& camera, int width, int height, int bounces, bool glossy)
     : mState(state), mLights(lights), mAreaLights(state, lights), mWidth(width),
-      mHeight(height), mBounces(bounces) {
+      mHeight(height), mBounces(bounces), mGlossy(glossy) {
     const glm::dmat4 clipToWorld =
             glm::inverse(glm::dmat4(camera.projection) * glm::dmat4(camera.view));
     mNear[0] = clipToWorld * glm::dvec4(0.0, 0.0, -1.0, 1.0);
@@ -72,16 +73,32 @@ PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
             const float u1 = rng.nextFloat(), u2 = rng.nextFloat();
             term += throughput * areaLight(surface, u1, u2, incoherent, counts);
         }
-        if ((last && !mClosingRay) || maxComponent(throughput * surface.albedo) <= 0.0f) break;
+        const bool dark = mGlossy ? !reflects(surface) || maxComponent(throughput) <= 0.0f
+                                  : maxComponent(throughput * surface.albedo) <= 0.0f;
+        if ((last && !mClosingRay) || dark) break;
         if (!last) {
             result.indirect += throughput * connect(surface, lightVertices, incoherent, counts);
         }
-        throughput *= surface.albedo;
         const float u1 = vertex == 0 ? u[0] : rng.nextFloat();
         const float u2 = vertex == 0 ? u[1] : rng.nextFloat();
-        const glm::vec3 direction = sampleCosineHemisphere(surface.shadingNormal, u1, u2);
+        glm::vec3 direction;
+        if (mGlossy) {
+            const float lobe[3] = {rng.nextFloat(), u1, u2};
+            if (!sampleBrdf(surface.brdf, surface.shadingNormal, surface.toViewer, lobe,
+                        direction)) {
+                break;
+            }
+        } else {
+            throughput *= surface.albedo;
+            direction = sampleCosineHemisphere(surface.shadingNormal, u1, u2);
+        }
         const float cosSampled = glm::dot(direction, surface.shadingNormal);
         if (glm::dot(direction, surface.geometricNormal) <= 0.0f || cosSampled <= 0.0f) break;
+        const float pdfBounce = bouncePdf(surface, direction, cosSampled);
+        if (mGlossy) {
+            if (!(pdfBounce > 0.0f)) break;
+            throughput *= glossyBrdf(surface, direction) * (cosSampled / pdfBounce);
+        }
         const glm::vec3 origin = offsetOrigin(surface);
         rayHit = ray(origin, direction, std::numeric_limits<float>::infinity());
         ++counts.bounce;
@@ -94,11 +111,10 @@ PathSample PathTracer::trace(float x, float y, const float u[4], Pcg32& rng,
         const float distance2 = glm::dot(step, step);
         if (maxComponent(surface.emission) > 0.0f) {
             term += throughput * surface.emission *
-                    bounceEmissionWeight(surface, cosSampled, distance2, direction);
+                    bounceEmissionWeight(surface, pdfBounce, distance2, direction);
         }
         if (last) break;
-        pdfArea = cosSampled * glm::one_over_pi<float>() *
-                std::abs(glm::dot(surface.geometricNormal, direction)) /
+        pdfArea = pdfBounce * std::abs(glm::dot(surface.geometricNormal, direction)) /
                 std::max(distance2, std::numeric_limits<float>::min());
     }
     return result;
@@ -153,6 +169,11 @@ bool PathTracer::interact(const RTCRayHit& rayHit, Surface& surface) const {
 
     surface.triangle = triangle;
     surface.albedo = glm::vec3(mState.baseColor(triangle, u, v));
+    surface.toViewer = incoming;
+    if (mGlossy) {
+        const ShadingMaterial& m = mState.materials[info.material];
+        surface.brdf = makeGltfBrdf(surface.albedo, m.metallic, m.roughness);
+    }
     surface.emission = mState.emitsTowards(triangle, incoming) ? mState.emission(triangle, u, v)
                                                               : glm::vec3(0.0f);
     return true;
@@ -172,7 +193,7 @@ bool PathTracer::occluded(const glm::vec3& origin, const glm::vec3& direction, f
 // light vertices carry the MIS weight pA / (pA + pB); with pdfArea < 0 (camera hit) none.
 glm::vec3 PathTracer::directLight(const Surface& surface, float pdfArea,
         RTCIntersectContext& context, RayCounts& counts) const {
-    if (maxComponent(surface.albedo) <= 0.0f) return glm::vec3(0.0f);
+    if (!reflects(surface)) return glm::vec3(0.0f);
     glm::vec3 sum(0.0f);
     const glm::vec3 origin = offsetOrigin(surface);
     for (std::size_t i = 0; i < mLights.size(); ++i) {
@@ -195,9 +216,9 @@ glm::vec3 PathTracer::directLight(const Surface& surface, float pdfArea,
             const float pdfLight = mEmissionPdf[i] * cosGeometric / (distance * distance);
             weight = pdfArea / (pdfArea + pdfLight);
         }
-        sum += radiant * (factor * cosTheta * weight);
+        sum += glossyBrdf(surface, wi) * radiant * (factor * cosTheta * weight);
     }
-    return surface.albedo * glm::one_over_pi<float>() * sum;
+    return mGlossy ? sum : surface.albedo * glm::one_over_pi<float>() * sum;
 }
 
 // Area lights at x by one point sampled from them (AreaLightSampling.h) and a visibility ray
@@ -207,7 +228,7 @@ glm::vec3 PathTracer::directLight(const Surface& surface, float pdfArea,
 glm::vec3 PathTracer::areaLight(const Surface& x, float u1, float u2,
         RTCIntersectContext& context, RayCounts& counts) const {
     EmitterSample y;
-    if (maxComponent(x.albedo) <= 0.0f || !mAreaLights.sample(u1, u2, y)) return glm::vec3(0.0f);
+    if (!reflects(x) || !mAreaLights.sample(u1, u2, y)) return glm::vec3(0.0f);
     const glm::vec3 toY = y.position - x.position;
     const float distance2 = glm::dot(toY, toY);
     if (!(distance2 > 0.0f) || !std::isfinite(distance2)) return glm::vec3(0.0f);
@@ -231,20 +252,20 @@ glm::vec3 PathTracer::areaLight(const Surface& x, float u1, float u2,
     }
     float weight = 1.0f;
     if (y.onGeometry) {
-        weight = pdfLight / (pdfLight + cosX * glm::one_over_pi<float>());
+        weight = pdfLight / (pdfLight + bouncePdf(x, wi, cosX));
     }
-    return x.albedo * glm::one_over_pi<float>() * y.radiance * (cosX / pdfLight * weight);
+    const glm::vec3 f = mGlossy ? glossyBrdf(x, wi) : x.albedo * glm::one_over_pi<float>();
+    return f * y.radiance * (cosX / pdfLight * weight);
 }
 
-// MIS weight of emission a cosine-sampled bounce ray found at `hit`: pB / (pB + pL) when the
-// triangle is part of an area light (NEE at the bounce's origin could have picked the point),
-// otherwise 1.
-float PathTracer::bounceEmissionWeight(const Surface& hit, float cosSampled, float distance2,
+// MIS weight of emission a bounce ray (sampled with solid-angle density pdfBounce) found at
+// `hit`: pB / (pB + pL) when the triangle is part of an area light (NEE at the bounce's origin
+// could have picked the point), otherwise 1.
+float PathTracer::bounceEmissionWeight(const Surface& hit, float pdfBounce, float distance2,
         const glm::vec3& direction) const {
     const float pdfArea = mAreaLights.pdfArea(hit.triangle);
     const float cosY = std::abs(glm::dot(hit.geometricNormal, direction));
     if (!(pdfArea > 0.0f) || !(cosY > 0.0f)) return 1.0f;
-    const float pdfBounce = cosSampled * glm::one_over_pi<float>();
     const float pdfLight = pdfArea * distance2 / cosY;
     return std::isfinite(pdfLight) ? pdfBounce / (pdfBounce + pdfLight) : 0.0f;
 }
@@ -273,13 +294,14 @@ void PathTracer::sampleLightVertices(const float u[2], Pcg32& rng,
         const Surface& s = vertex.surface;
         glm::vec3 wi;
         float distance = 0.0f, factor = 0.0f;
-        if (maxComponent(s.albedo) <= 0.0f ||
-                !lightGeometry(light, s.position, wi, distance, factor)) {
+        if (!reflects(s) || !lightGeometry(light, s.position, wi, distance, factor)) {
             continue;
         }
         const float cosTheta = glm::dot(s.shadingNormal, wi);
         if (cosTheta <= 0.0f) continue;
-        vertex.radiance = s.albedo * glm::one_over_pi<float>() * radiant * (factor * cosTheta);
+        vertex.radiance = radiant * (factor * cosTheta);
+        if (!mGlossy) vertex.radiance = s.albedo * glm::one_over_pi<float>() * vertex.radiance;
+        vertex.toLight = wi;
         vertex.pdfArea = mEmissionPdf[i] * std::abs(glm::dot(s.geometricNormal, wi)) /
                          (distance * distance);
         vertex.valid = vertex.pdfArea > 0.0f && std::isfinite(vertex.pdfArea);
@@ -302,11 +324,32 @@ glm::vec3 PathTracer::connect(const Surface& x, const std::vector<LightVertex>& 
         const float cosY = -glm::dot(y.geometricNormal, w);
         if (cosX <= 0.0f || glm::dot(x.geometricNormal, w) <= 0.0f || cosY <= 0.0f) continue;
         const float geometry = cosX * cosY / distance2;
-        const float pdfBsdf = geometry * glm::one_over_pi<float>();
+        const float pdfBsdf = mGlossy ? bouncePdf(x, w, cosX) * cosY / distance2
+                                      : geometry * glm::one_over_pi<float>();
         if (!visible(x, y, context, counts)) continue;
-        sum += vertex.radiance * (geometry / (pdfBsdf + vertex.pdfArea));
+        glm::vec3 radiance = vertex.radiance;
+        if (mGlossy) {
+            radiance *= glossyBrdf(x, w) *
+                        evaluateBrdf(y.brdf, y.shadingNormal, -w, vertex.toLight);
+        }
+        sum += radiance * (geometry / (pdfBsdf + vertex.pdfArea));
     }
-    return x.albedo * glm::one_over_pi<float>() * sum;
+    return mGlossy ? sum : x.albedo * glm::one_over_pi<float>() * sum;
+}
+
+bool PathTracer::reflects(const Surface& surface) const {
+    if (!mGlossy) return maxComponent(surface.albedo) > 0.0f;
+    return maxComponent(surface.brdf.diffuse) > 0.0f || maxComponent(surface.brdf.f0) > 0.0f;
+}
+
+glm::vec3 PathTracer::glossyBrdf(const Surface& surface, const glm::vec3& wi) const {
+    if (!mGlossy) return glm::vec3(1.0f);
+    return evaluateBrdf(surface.brdf, surface.shadingNormal, surface.toViewer, wi);
+}
+
+float PathTracer::bouncePdf(const Surface& surface, const glm::vec3& wi, float cosWi) const {
+    if (!mGlossy) return cosWi * glm::one_over_pi<float>();
+    return brdfPdf(surface.brdf, surface.shadingNormal, surface.toViewer, wi);
 }
 
 // Whether the segment from x to y is free. A ray arriving at y at a grazing angle may touch

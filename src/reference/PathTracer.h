@@ -5,6 +5,7 @@
 
 #include "reference/AreaLightSampling.h"
 #include "reference/EmbreeScene.h"
+#include "reference/GltfBrdf.h"
 #include "reference/Pcg32.h"
 #include "reference/ReferenceRenderer.h"
 
@@ -20,6 +21,8 @@ struct Surface {
     glm::vec3 geometricNormal{0.0f};   // unit, on the side the ray came from
     glm::vec3 shadingNormal{0.0f};     // unit, on the side the ray came from
     glm::vec3 albedo{0.0f};
+    glm::vec3 toViewer{0.0f};          // unit, towards the ray's origin
+    GltfBrdf brdf;                     // the glossy model's BRDF (unused when Lambertian)
     glm::vec3 emission{0.0f};          // towards the ray's origin (0 from a back side)
     float offset = 0.0f;               // metres to move ray origins off the surface
     std::uint32_t triangle = 0;        // index into EmbreeState::triangles
@@ -35,7 +38,9 @@ struct PathSample {
 // connection strategy needs: its outgoing radiance due to the light and its area density.
 struct LightVertex {
     Surface surface;
-    glm::vec3 radiance{0.0f};   // rho/pi x colour x intensity x E-factor x cos at the vertex
+    glm::vec3 radiance{0.0f};   // rho/pi x colour x intensity x E-factor x cos at the vertex;
+                                // glossy model: without rho/pi (f depends on where it goes)
+    glm::vec3 toLight{0.0f};    // unit, from the vertex towards the light
     float pdfArea = 0.0f;       // emissionPdf x |cos_g| / d^2
     bool valid = false;
 };
@@ -73,10 +78,15 @@ struct LightVertex {
 //   density for a Lambertian surface, so no other strategy or weight is needed. An open plane
 //   thus shows rho L exactly (E = pi L), also with bounces = 0 (the closing ray). Camera rays
 //   that escape stay black: the sky lights the scene but is not drawn as a background.
+// Glossy model (`glossy`, GltfBrdf.h): every surface has the glTF metallic-roughness BRDF f
+// instead of rho/pi, bounce directions come from sampleBrdf() (a random lobe choice drawn from
+// `rng`) with the throughput multiplied by f cos / pdf, and every MIS weight above uses
+// brdfPdf() where it used cos/pi. Lambertian scenes keep their arithmetic and random streams.
 class PathTracer {
 public:
     PathTracer(const EmbreeState& state, const std::vector<scene::Light>& lights,
-            const scene::CameraView& camera, int width, int height, int bounces);
+            const scene::CameraView& camera, int width, int height, int bounces,
+            bool glossy = false);
 
     // One path through continuous image coordinates (x, y), x in [0, width) left to right,
     // y in [0, height) top to bottom. u[0..1]: the camera hit's cosine ray, u[2..3]: the first
@@ -98,8 +108,14 @@ private:
             RayCounts& counts) const;
     glm::vec3 areaLight(const Surface& x, float u1, float u2, RTCIntersectContext& context,
             RayCounts& counts) const;
-    float bounceEmissionWeight(const Surface& hit, float cosSampled, float distance2,
+    float bounceEmissionWeight(const Surface& hit, float pdfBounce, float distance2,
             const glm::vec3& direction) const;
+    bool reflects(const Surface& surface) const;
+    // f(toViewer, wi) of the glossy model; 1 for Lambertian surfaces, whose rho/pi the callers
+    // apply once to their sums.
+    glm::vec3 glossyBrdf(const Surface& surface, const glm::vec3& wi) const;
+    // Solid-angle density of the bounce sampling at `surface` towards wi.
+    float bouncePdf(const Surface& surface, const glm::vec3& wi, float cosWi) const;
     void sampleLightVertices(const float u[2], Pcg32& rng, std::vector<LightVertex>& vertices,
             RTCIntersectContext& context, RayCounts& counts) const;
     glm::vec3 connect(const Surface& x, const std::vector<LightVertex>& vertices,
@@ -114,6 +130,7 @@ private:
     glm::vec3 mSky{0.0f};              // radiance of all sky lights together
     bool mClosingRay = false;          // the last vertex casts a cosine ray too (see above)
     int mWidth, mHeight, mBounces;
+    bool mGlossy;
     // Clip-to-world images of (ndcX, ndcY, -1 | +1, 1) = [0] + ndcX [1] + ndcY [2], homogeneous.
     glm::dvec4 mNear[3];
     glm::dvec4 mFar[3];

@@ -161,6 +161,15 @@ std::string referenceCacheKey(const scene::Scene& scene, const scene::CameraView
     h.value(settings.spp);
     h.value(settings.bounces);
     h.value(settings.seed);
+    // Lambertian keys stay as they were before the glossy model existed, so their entries
+    // remain valid; glossy ones add the model and every material's metallic and roughness.
+    if (settings.glossy) {
+        h.string("glTF metallic-roughness");
+        for (const scene::Material& m : scene.materials) {
+            h.value(m.metallicFactor);
+            h.value(m.roughnessFactor);
+        }
+    }
     return h.hex();
 }
 

@@ -3,7 +3,9 @@
 // depends on: the scene as the renderer sees it (world transforms, vertex attributes, indices,
 // materials, decoded texture pixels and sampler modes, lights — including ones added on the
 // command line or by defaults), the camera's view and projection matrices, width, height,
-// spp, bounces, seed and kReferenceCacheFormat. Hashing the loaded scene rather than file bytes
+// spp, bounces, seed and kReferenceCacheFormat; for glossy renders also the material model and
+// every material's metallic and roughness factors (Lambertian keys leave them out, so entries
+// made before the glossy model stay valid). Hashing the loaded scene rather than file bytes
 // covers the .gltf/.glb and every buffer and image it references, scenes built in code, and
 // loader changes, while byte edits that change nothing (whitespace) keep the entry.
 // Files per entry, in the cache directory: <key>.{direct,indirect,final,coverage}.pfm (coverage

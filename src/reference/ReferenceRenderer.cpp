@@ -159,7 +159,8 @@ ReferenceResult ReferenceRenderer::render(const scene::CameraView& camera, int w
         halves.indirect[h].assign(pixelCount, glm::vec3(0.0f));
     }
 
-    const PathTracer tracer(*mState, mScene.lights, camera, width, height, bounces);
+    const PathTracer tracer(*mState, mScene.lights, camera, width, height, bounces,
+            settings.glossy);
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;

@@ -3,7 +3,9 @@
 // - Surfaces are Lambertian, f = rho/pi, rho = baseColorFactor x base-colour texture (sRGB
 //   decoded, bilinear, with the sampler's wrap modes) x COLOR_0; emission Le = emissiveFactor x
 //   emissive texture, from the front side (both sides when doubleSided). alphaMode MASK
-//   cut-outs are Embree filter functions.
+//   cut-outs are Embree filter functions. With ReferenceSettings::glossy (material.model=gltf)
+//   every surface has the glTF metallic-roughness BRDF instead (GltfBrdf.h), sampled by its
+//   own lobes; PathTracer.h says what changes.
 // - Punctual lights by next-event estimation with shadow rays: E = I cos(theta)/d^2 (point),
 //   x s^2 (spot), E = I cos(theta) (directional); glTF `range` is never applied.
 // - Area lights (emissive surfaces, command-line rectangles) by next-event estimation too: a

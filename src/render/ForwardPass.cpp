@@ -31,6 +31,9 @@ void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     const glm::vec2 indirectSize = in.indirect ? glm::vec2(in.indirectSize) : glm::vec2(0.0f);
     glProgramUniform2fv(mProgram.id(), LOC_FORWARD_INDIRECT_SIZE, 1, &indirectSize[0]);
     glBindTextureUnit(BIND_TEX_INDIRECT, in.indirect ? in.indirect->id() : 0);
+    const bool specular = in.indirect && in.indirectSpecular;
+    glProgramUniform1i(mProgram.id(), LOC_FORWARD_INDIRECT_SPECULAR, specular ? 1 : 0);
+    glBindTextureUnit(BIND_TEX_INDIRECT_SPECULAR, specular ? in.indirectSpecular->id() : 0);
     in.shadows.bind();
     in.scene.drawAll(mProgram.id(), true);
     glDepthMask(GL_TRUE);

@@ -1,5 +1,6 @@
-// Final shading at full resolution: Lambertian + Blinn-Phong direct light from every light
-// (DESIGN.md conventions), emission and the GI technique's indirect light, into a
+// Final shading at full resolution: direct light from every light (DESIGN.md conventions) with
+// the material model of material.model (Lambertian + Blinn-Phong, or glTF metallic-
+// roughness), emission and the GI technique's indirect light, into a
 // linear-radiance target. An optional depth pre-pass (render.depth_prepass) lets each pixel
 // be shaded once however much geometry overlaps it.
 // Inputs : the GpuScene (vertices, materials, lights), shadow maps, the frame UBO, the GI
@@ -29,6 +30,9 @@ public:
         const gl::Texture* indirect;
         glm::ivec2 indirectSize;
         bool depthPrepass;                 // render.depth_prepass
+        // RGBA16F at indirectSize: rgb = indirect specular radiance (W/(m^2 sr)), a = view
+        // depth (m); nullptr: none (only voxel GI with material.model=gltf makes it)
+        const gl::Texture* indirectSpecular = nullptr;
     };
     struct Outputs {
         const gl::RenderTarget& target;    // RGBA32F colour + DEPTH_COMPONENT32F, cleared here

@@ -180,8 +180,11 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
     frame.inverseViewProjection = glm::inverse(frame.viewProjection);
     frame.view = camera.view;
     frame.cameraPosition = glm::vec4(camera.eye, 1.0f);
-    frame.shading = glm::vec4(mSettings.specular, mSettings.shininess,
-            mSettings.specular > 0.0f ? 1.0f : 0.0f, mSettings.shadow.enabled ? 1.0f : 0.0f);
+    const int shadingModel = mSettings.glossyMaterials() ? SHADING_GLTF
+                             : mSettings.specular > 0.0f ? SHADING_PHONG
+                                                         : SHADING_LAMBERT;
+    frame.shading = glm::vec4(mSettings.specular, mSettings.shininess, float(shadingModel),
+            mSettings.shadow.enabled ? 1.0f : 0.0f);
     const int outputKind = output == OutputComponent::Final    ? OUTPUT_FINAL
                            : output == OutputComponent::Direct ? OUTPUT_DIRECT
                                                                : OUTPUT_INDIRECT;
@@ -245,7 +248,7 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy->voxelUniforms.id());
     }
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
-                             mSettings.depthPrepass},
+                             mSettings.depthPrepass, gi.indirectSpecular},
             {mTarget}, profiler);
 }
 

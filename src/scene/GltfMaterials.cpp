@@ -90,6 +90,19 @@ bool SceneBuilder::convertMaterials() {
             return fail(element, "emissiveFactor must be 3 finite numbers >= 0");
         }
         material.emissiveFactor = glm::vec3(emissive[0], emissive[1], emissive[2]);
+        const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+        if (!finite(pbr.metallicFactor) || pbr.metallicFactor < 0.0 || pbr.metallicFactor > 1.0 ||
+                !finite(pbr.roughnessFactor) || pbr.roughnessFactor < 0.0 ||
+                pbr.roughnessFactor > 1.0) {
+            return fail(element, "pbrMetallicRoughness.metallicFactor and roughnessFactor must "
+                                 "be finite numbers in [0, 1]");
+        }
+        material.metallicFactor = float(pbr.metallicFactor);
+        material.roughnessFactor = float(pbr.roughnessFactor);
+        if (pbr.metallicRoughnessTexture.index >= 0) {
+            warn(element, "pbrMetallicRoughness.metallicRoughnessTexture is not supported; the "
+                          "factors alone are used");
+        }
         auto strength = source.extensions.find("KHR_materials_emissive_strength");
         if (strength != source.extensions.end()) {
             const tinygltf::Value& ext = strength->second;

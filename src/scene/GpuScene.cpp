@@ -128,6 +128,7 @@ void GpuScene::uploadMaterials(const Scene& scene) {
                 m.emissiveTexture >= 0 ? MATERIAL_EMISSIVE_TEXTURE : 0,
                 m.alphaMode == AlphaMode::Mask ? ALPHA_MASK : ALPHA_OPAQUE,
                 m.baseColorTexCoord);
+        g.metallicRoughness = glm::vec4(m.metallicFactor, m.roughnessFactor, 0.0f, 0.0f);
         table.push_back(g);
         mBaseColorTexture.push_back(m.baseColorTexture);
         mEmissiveTexture.push_back(m.emissiveTexture);
@@ -135,6 +136,7 @@ void GpuScene::uploadMaterials(const Scene& scene) {
     shader::GpuMaterial fallback{};
     fallback.baseColorFactor = kDefaultBaseColor;
     fallback.emissiveAndCutoff = glm::vec4(0.0f, 0.0f, 0.0f, 0.5f);
+    fallback.metallicRoughness = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
     table.push_back(fallback);
     mBaseColorTexture.push_back(-1);
     mEmissiveTexture.push_back(-1);

@@ -53,6 +53,11 @@ struct Material {
                                          // multiplied by KHR_materials_emissive_strength
     int emissiveTexture = -1;
     int emissiveTexCoord = 0;            // which TEXCOORD_n the emissive texture uses (0 or 1)
+    // glTF metallic-roughness, used only by the glossy material model (material.model=gltf);
+    // the Lambertian model ignores them. A primitive without a material is a diffuse white
+    // (metallic 0), not glTF's default material (metallic 1).
+    float metallicFactor = 0.0f;         // [0, 1]
+    float roughnessFactor = 1.0f;        // perceptual roughness [0, 1]; GGX alpha = its square
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;            // MASK: texels with alpha below this are cut out
     bool doubleSided = false;

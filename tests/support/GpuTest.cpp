@@ -74,7 +74,8 @@ core::Image renderScene(const scene::Scene& scene, const RenderRequest& request)
     }
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
-    if (!renderer.init(scene, request.settings, shaders, error)) {
+    if (!renderer.init(scene, request.settings, shaders, error) ||
+            !renderer.setMode(request.mode, error)) {
         ADD_FAILURE() << error;
         return {};
     }

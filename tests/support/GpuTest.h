@@ -45,6 +45,7 @@ struct RenderRequest {
     int cameraIndex = 0;
     render::OutputComponent output = render::OutputComponent::Final;
     Settings settings;
+    render::GiMode mode = render::GiMode::Direct;
 };
 
 // Loads, renders and reads back one frame with the current context. Fails the test (and

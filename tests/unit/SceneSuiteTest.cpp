@@ -19,7 +19,8 @@
 namespace gi::test {
 namespace {
 
-const char* const kSuite[] = {"cornell_classic", "cornell_double_sided", "cornell_low_light",
+const char* const kSuite[] = {"cornell_classic", "cornell_double_sided", "cornell_glossy",
+        "cornell_low_light",
         "cornell_x10", "cornell_spot", "cornell_open_front_sun", "two_rooms_thin_wall",
         "closed_white_box"};
 
@@ -180,6 +181,29 @@ TEST(SceneSuite, DoubleSidedHasTheFlagAndTexcoordsEverywhere) {
     EXPECT_EQ(scene.triangleCount(), box.triangleCount());
     expectNear(scene.bounds.max, box.bounds.max, 0.0f, "bounds max");
     EXPECT_EQ(onlyLight(scene), onlyLight(box));
+}
+
+TEST(SceneSuite, GlossyIsTheClassicBoxWithARoughMetalTallBlock) {
+    const scene::Scene classic = loadSuiteScene("cornell_classic");
+    const scene::Scene scene = loadSuiteScene("cornell_glossy");
+    EXPECT_EQ(scene.triangleCount(), classic.triangleCount());
+    expectNear(scene.bounds.max, classic.bounds.max, 0.0f, "bounds max");
+    EXPECT_EQ(onlyLight(scene), onlyLight(classic));
+    int metals = 0;
+    for (const scene::Primitive& primitive : scene.primitives) {
+        ASSERT_GE(primitive.material, 0);
+        const scene::Material& m = scene.materials[std::size_t(primitive.material)];
+        if (m.metallicFactor == 0.0f) {
+            EXPECT_EQ(m.roughnessFactor, 1.0f) << m.name;
+            continue;
+        }
+        ++metals;
+        EXPECT_EQ(m.metallicFactor, 1.0f);
+        EXPECT_FLOAT_EQ(m.roughnessFactor, 0.3f);
+        // The tall block: the primitive reaching highest but the room's.
+        EXPECT_NEAR(primitive.localBounds.max.y, 0.33f, 0.01f);
+    }
+    EXPECT_EQ(metals, 1);
 }
 
 TEST(SceneSuite, LowLightHangsATenthOfTheBoxHeightUnderTheCeiling) {

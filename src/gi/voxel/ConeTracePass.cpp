@@ -2,6 +2,9 @@
 
 #include "gl/Shared.h"
 
+#include <cstdio>
+#include <string>
+
 namespace gi::voxel {
 
 bool ConeTracePass::init(gl::ShaderLibrary& shaders, std::string& error) {
@@ -17,6 +20,22 @@ bool ConeTracePass::init(gl::ShaderLibrary& shaders, std::string& error) {
     return bool(mDepthProgram);
 }
 
+// Draws into mTarget and mSpecular at once, mSpecular cleared to 0.
+void ConeTracePass::bindSpecularTarget() {
+    if (mSpecularSize != mSize || !mSpecular) {
+        mSpecular = gl::createTargetTexture({GL_RGBA16F, "voxel/indirect_specular", true}, mSize);
+        std::string error;
+        if (!gl::attachFramebuffer(mSpecularFramebuffer, "voxel/trace_specular",
+                    {&mTarget.color(), &mSpecular}, &mTarget.depth(), error)) {
+            std::fprintf(stderr, "%s\n", error.c_str());
+        }
+        mSpecularSize = mSize;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, mSpecularFramebuffer.id());
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(mSpecularFramebuffer.id(), GL_COLOR, 1, zero);
+}
+
 void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
     const int stride = out.pattern.stride;
     mTarget.resize((out.size + stride - 1) / stride);
@@ -24,6 +43,7 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     gl::GpuScope scope(profiler, "voxel/trace");
     mTarget.bind();
     mTarget.clear();
+    if (in.specular) bindSpecularTarget();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);

@@ -85,6 +85,7 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                          s.clampCentre != mSettings.clampCentre;
     mSettings = s;
     mBounces = settings.giBounces;
+    mSpecularCone = settings.glossyMaterials();
     mConfigured = true;
     if (reallocate) mTextures.allocate(s.resolution, s.levels, s.anisotropic, mBounces > 1);
     if (replace) mFinestExtent = s.extent;
@@ -239,13 +240,16 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
 void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
-    const ConeTracePass::Inputs traceInputs{in.scene, in.frameUniforms, mUniforms, mTextures};
+    const ConeTracePass::Inputs traceInputs{in.scene, in.frameUniforms, mUniforms, mTextures,
+            mSpecularCone};
     if (mSettings.traceReuse) {
         traceSize = (traceSize + 1) / 2 * 2;
         // A frame whose voxels were lit anew traces every pixel, so a changed scene never
         // shows light from before the change; while the light stands still, a quarter.
-        const bool reuse = mReuse.hasHistory() && mReuse.size() == traceSize &&
-                           mTracedContent == mContentVersion;
+        // The specular cone's light depends on the view, which reprojection cannot carry: a
+        // frame with it traces every pixel.
+        const bool reuse = !mSpecularCone && mReuse.hasHistory() &&
+                           mReuse.size() == traceSize && mTracedContent == mContentVersion;
         // Diagonal neighbours first: two frames cover the blocks evenly.
         constexpr glm::ivec2 kPhases[4] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
         const glm::ivec2 phase = reuse ? kPhases[mReusePhase++ % 4] : glm::ivec2(0);
@@ -278,6 +282,7 @@ GiOutputs VoxelizationManager::outputs() const {
     const gl::Texture& traced = mSettings.traceReuse ? mReuse.result() : mTrace.indirect();
     out.indirect = mSettings.filterRadius > 0 ? &mFilter.result() : &traced;
     out.size = mSettings.traceReuse ? mReuse.size() : mTrace.size();
+    out.indirectSpecular = mSpecularCone ? &mTrace.specular() : nullptr;
     out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
     return out;
 }

@@ -73,6 +73,7 @@ private:
 
     VoxelSettings mSettings;
     int mBounces = 1;   // gi.bounces
+    bool mSpecularCone = false;   // material.model=gltf: ConeTracePass traces one more cone
     bool mConfigured = false;
     scene::Aabb mSceneBounds;
     CascadeVolume mVolume;

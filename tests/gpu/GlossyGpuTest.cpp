@@ -1,0 +1,127 @@
+// Voxel GI with glossy materials (material.model=gltf) on the scene suite's glossy Cornell
+// box: the specular cone lights the metal block about as the path tracer with the same BRDF
+// does, and material.specular=0 leaves every model Lambertian.
+#include "GpuTest.h"
+#include "TestScenes.h"
+
+#include "reference/ReferenceRenderer.h"
+#include "render/FrameRenderer.h"
+#include "scene/CameraView.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace gi::test {
+namespace {
+
+constexpr int kSize = 48;
+
+scene::Scene glossyBox() { return loadTestScene("assets/scene_suite/cornell_glossy.gltf"); }
+
+scene::CameraView camera(const scene::Scene& scene) {
+    return scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
+}
+
+core::Image voxelIndirect(const scene::Scene& scene, const Settings& settings) {
+    RenderRequest request;
+    request.width = request.height = kSize;
+    request.output = render::OutputComponent::Indirect;
+    request.settings = settings;
+    request.mode = render::GiMode::Voxel;
+    return renderScene(scene, request);
+}
+
+// Pixels wholly covered by the metal block: the path tracer's view of the scene with the
+// metal glowing (radiance 100) and no light, where nothing else comes near 90.
+std::vector<bool> metalPixels(scene::Scene scene) {
+    for (scene::Material& m : scene.materials) {
+        if (m.metallicFactor > 0.0f) m.emissiveFactor = glm::vec3(100.0f);
+    }
+    scene.lights.clear();
+    ReferenceSettings settings;
+    settings.spp = 4;
+    const reference::ReferenceResult glow =
+            reference::renderReference(scene, camera(scene), kSize, kSize, settings);
+    std::vector<bool> mask(std::size_t(kSize * kSize), false);
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            mask[std::size_t(y * kSize + x)] = glow.direct.at(x, y).r > 90.0f;
+        }
+    }
+    return mask;
+}
+
+double sumOver(const core::Image& image, const std::vector<bool>& mask) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            if (!mask[std::size_t(y * image.width + x)]) continue;
+            const glm::vec3 c = image.at(x, y);
+            sum += double(c.r + c.g + c.b);
+        }
+    }
+    return sum;
+}
+
+class GlossyGpuTest : public GpuTest {};
+
+// A metal has no diffuse term: its indirect light is the specular cone's (and the share of
+// the lobe taken from the diffuse cones). At 96x96 (scripts/measure_glossy.py) it holds 0.46
+// of the path tracer's: one cone and the hemisphere's mean miss how much of the GGX tails
+// reach the bright ceiling from the block's faces, which look out of the open box. Without
+// the cone the block's indirect light is 0.
+TEST_F(GlossyGpuTest, SpecularConeLightsTheMetalBlockRoughlyAsThePathTracer) {
+    const scene::Scene scene = glossyBox();
+    const std::vector<bool> metal = metalPixels(scene);
+    int pixels = 0;
+    for (bool m : metal) pixels += m ? 1 : 0;
+    ASSERT_GT(pixels, 50);
+    Settings settings;
+    settings.plan = PLAN_FIXED;
+    settings.materialModel = MATERIAL_GLTF;
+    ReferenceSettings referenceSettings;
+    referenceSettings.spp = 256;
+    referenceSettings.glossy = true;
+    const reference::ReferenceResult truth = reference::renderReference(scene, camera(scene),
+            kSize, kSize, referenceSettings);
+    const double voxel = sumOver(voxelIndirect(scene, settings), metal);
+    const double reference = sumOver(truth.indirect, metal);
+    std::printf("metal block indirect light over %d pixels: voxel %.3f, reference %.3f, "
+                "ratio %.3f\n", pixels, voxel, reference, voxel / reference);
+    ASSERT_GT(reference, 0.0);
+    EXPECT_GT(voxel / reference, 0.3);
+    EXPECT_LT(voxel / reference, 1.3);
+}
+
+TEST_F(GlossyGpuTest, NoSpecularIsLambertianInEveryModel) {
+    const scene::Scene scene = glossyBox();
+    Settings phong;
+    phong.specular = 0.0f;
+    Settings gltf = phong;
+    gltf.materialModel = MATERIAL_GLTF;
+    const core::Image a = voxelIndirect(scene, phong);
+    const core::Image b = voxelIndirect(scene, gltf);
+    gltf.specular = 1.0f;
+    const core::Image glossy = voxelIndirect(scene, gltf);
+    ASSERT_EQ(a.rgb.size(), b.rgb.size());
+    ASSERT_EQ(a.rgb.size(), glossy.rgb.size());
+    // Voxelization averages fragments in whatever order the GPU delivers them, so two
+    // frames of one setting may differ a little (llvmpipe over EGL: 0.2% of the peak, the
+    // same between two phong frames): compare with what the glossy model itself changes.
+    float peak = 0.0f, same = 0.0f, changed = 0.0f;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+        peak = std::max(peak, a.rgb[i]);
+        same = std::max(same, std::abs(a.rgb[i] - b.rgb[i]));
+        changed = std::max(changed, std::abs(a.rgb[i] - glossy.rgb[i]));
+    }
+    std::printf("largest difference: phong vs gltf without specular %.3g, vs gltf %.3g, "
+                "peak %.3g\n", same, changed, peak);
+    EXPECT_LE(same, 1e-2f * peak);
+    EXPECT_GT(changed, 0.05f * peak);
+}
+
+} // namespace
+} // namespace gi::test
