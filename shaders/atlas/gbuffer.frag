@@ -115,7 +115,7 @@ vec3 irradiance(vec3 n) {
         vec3 toLight;
         float distance;
         lightDirection(lights[i], vin.position, toLight, distance);
-        if (frame.shading.w != 0.0) li *= shadowVisibility(i, vin.position, n, distance);
+        if (shadowsApplied()) li *= shadowVisibility(i, vin.position, n, distance);
         e += li;
     }
     return e;

@@ -34,14 +34,14 @@ float emitterSamplingWeight(GpuEmitter e) {
 }
 
 bool shadowRayOccluded(vec3 origin, vec3 dir, float tMax) {
-    if (int(frame.shadowing.x) == SHADOW_METHOD_LINESPACE) return lineSpaceOccluded(origin, dir, tMax);
+    if (shadowMethod() == SHADOW_METHOD_LINESPACE) return lineSpaceOccluded(origin, dir, tMax);
     return bvhOccluded(origin, dir, tMax);
 }
 
 // How far off a surface shadow rays start (m).
 float shadowRayOffset() {
     float offset = frame.shadowing.z;
-    if (int(frame.shadowing.x) != SHADOW_METHOD_LINESPACE) return offset;
+    if (shadowMethod() != SHADOW_METHOD_LINESPACE) return offset;
     return max(offset, lineSpaceSurfaceClearance());
 }
 
@@ -50,7 +50,7 @@ float shadowRayOffset() {
 // left to test.
 float shadowRayEnd(float r, float cosY) {
     float end = r * (1.0 - 1e-4);
-    if (int(frame.shadowing.x) != SHADOW_METHOD_LINESPACE) return end;
+    if (shadowMethod() != SHADOW_METHOD_LINESPACE) return end;
     return max(end - lineSpaceSurfaceClearance() / max(cosY, 0.2), 0.0);
 }
 
@@ -117,13 +117,13 @@ float voxelShadowCone(GpuLight light, vec3 position, vec3 n) {
 // `state`: the caller's random state (e.g. seeded from the pixel), advanced here.
 float directVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLight,
         inout uint state) {
-    if (frame.shading.w == 0.0) return 1.0;
-    if (int(frame.shadowing.x) == SHADOW_METHOD_SHADOWMAP) {
+    if (!shadowsApplied()) return 1.0;
+    if (shadowMethod() == SHADOW_METHOD_SHADOWMAP) {
         return shadowVisibility(lightIndex, position, n, distanceToLight);
     }
     GpuLight light = lights[lightIndex];
     int type = int(light.positionAndType.w);
-    if (int(frame.shadowing.x) == SHADOW_METHOD_VOXEL) return voxelShadowCone(light, position, n);
+    if (shadowMethod() == SHADOW_METHOD_VOXEL) return voxelShadowCone(light, position, n);
     vec3 origin = position + n * shadowRayOffset();
     if (type == LIGHT_AREA) return areaLightRayVisibility(light, origin, n, state);
     if (type == LIGHT_SKY) return 1.0;

@@ -8,4 +8,31 @@ layout(std140, binding = BIND_UBO_FRAME) uniform FrameBlock {
     FrameUniforms frame;
 };
 
+// The frame's switches. A program built for one setting of them (FRAME_SHADING_MODEL,
+// FRAME_SHADOW_METHOD, FRAME_SHADOWS; gl/ProgramVariants.h) reads them as constants and the
+// compiler drops the paths it never takes; without them they come from the frame uniforms.
+int shadingModel() {
+#ifdef FRAME_SHADING_MODEL
+    return FRAME_SHADING_MODEL;
+#else
+    return int(frame.shading.z);
+#endif
+}
+
+int shadowMethod() {
+#ifdef FRAME_SHADOW_METHOD
+    return FRAME_SHADOW_METHOD;
+#else
+    return int(frame.shadowing.x);
+#endif
+}
+
+bool shadowsApplied() {
+#ifdef FRAME_SHADOWS
+    return FRAME_SHADOWS != 0;
+#else
+    return frame.shading.w != 0.0;
+#endif
+}
+
 #endif

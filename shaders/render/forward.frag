@@ -1,6 +1,6 @@
 // Forward pass, fragment stage: direct light from every light, plus emission and the GI
 // technique's indirect light. Output is linear radiance (W/(m^2 sr)); alpha = 1 marks geometry.
-// Per frame.shading.z:
+// Per shadingModel() (frame.shading.z):
 //   SHADING_LAMBERT: L = rho/pi * E + Le
 //   SHADING_PHONG:   L = rho/pi * E + ks * (n+8)/(8 pi) * (N.H)^n * E + Le, in direct light
 //                    only; the (n+8)/(8 pi) factor normalises the lobe so ks is an energy
@@ -64,7 +64,7 @@ void main() {
 
     vec3 radiance = materialEmission(m, vin.texcoord0);
     float ks = frame.shading.x, shininess = frame.shading.y;
-    int model = int(frame.shading.z);
+    int model = shadingModel();
     GltfSurface surface = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);
     uint random = hash(uint(gl_FragCoord.y) * 65536u + uint(gl_FragCoord.x));
     for (int i = 0; i < frame.counts.x; ++i) {

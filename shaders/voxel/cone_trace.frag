@@ -53,7 +53,7 @@ void main() {
     }
     vec3 irradiance = coneIrradiance(origin, n, ringTurn, voxel.trace.y);
     outIndirect = vec4(irradiance, viewDepth);
-    if (int(frame.shading.z) == SHADING_GLTF) {
+    if (shadingModel() == SHADING_GLTF) {
         vec3 v = normalize(frame.cameraPosition.xyz - vin.position);
         vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
         GltfSurface s = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);

@@ -5,10 +5,11 @@
 namespace gi::render {
 
 bool ForwardPass::init(gl::ShaderLibrary& shaders, std::string& error) {
-    mProgram = shaders.build({"render/forward",
-            {{GL_VERTEX_SHADER, "render/forward.vert"}, {GL_FRAGMENT_SHADER, "render/forward.frag"}},
-            {}}, error);
-    if (!mProgram) return false;
+    if (!mPrograms.init(shaders, {"render/forward",
+                {{GL_VERTEX_SHADER, "render/forward.vert"},
+                 {GL_FRAGMENT_SHADER, "render/forward.frag"}}, {}}, error)) {
+        return false;
+    }
     mDepthProgram = shaders.build({"render/depth_prepass",
             {{GL_VERTEX_SHADER, "render/forward.vert"}, {GL_FRAGMENT_SHADER, "common/depth_only.frag"}},
             {}}, error);
@@ -27,15 +28,16 @@ void ForwardPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler&
     in.scene.bindLights();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     if (in.depthPrepass) in.scene.drawDepthPrepass(mDepthProgram.id());
-    glUseProgram(mProgram.id());
+    const GLuint program = mPrograms.id(in.switches.defines());
+    glUseProgram(program);
     const glm::vec2 indirectSize = in.indirect ? glm::vec2(in.indirectSize) : glm::vec2(0.0f);
-    glProgramUniform2fv(mProgram.id(), LOC_FORWARD_INDIRECT_SIZE, 1, &indirectSize[0]);
+    glProgramUniform2fv(program, LOC_FORWARD_INDIRECT_SIZE, 1, &indirectSize[0]);
     glBindTextureUnit(BIND_TEX_INDIRECT, in.indirect ? in.indirect->id() : 0);
     const bool specular = in.indirect && in.indirectSpecular;
-    glProgramUniform1i(mProgram.id(), LOC_FORWARD_INDIRECT_SPECULAR, specular ? 1 : 0);
+    glProgramUniform1i(program, LOC_FORWARD_INDIRECT_SPECULAR, specular ? 1 : 0);
     glBindTextureUnit(BIND_TEX_INDIRECT_SPECULAR, specular ? in.indirectSpecular->id() : 0);
     in.shadows.bind();
-    in.scene.drawAll(mProgram.id(), true);
+    in.scene.drawAll(program, true);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glUseProgram(0);

@@ -10,10 +10,12 @@
 #pragma once
 
 #include "gl/GpuProfiler.h"
+#include "gl/ProgramVariants.h"
 #include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
-#include "scene/GpuScene.h"
+#include "render/FrameSwitches.h"
 #include "render/ShadowPass.h"
+#include "scene/GpuScene.h"
 
 #include <glm/glm.hpp>
 
@@ -33,6 +35,7 @@ public:
         // RGBA16F at indirectSize: rgb = indirect specular radiance (W/(m^2 sr)), a = view
         // depth (m); nullptr: none (only voxel GI with material.model=gltf makes it)
         const gl::Texture* indirectSpecular = nullptr;
+        FrameSwitches switches{};          // the program is compiled for these
     };
     struct Outputs {
         const gl::RenderTarget& target;    // RGBA32F colour + DEPTH_COMPONENT32F, cleared here
@@ -43,7 +46,8 @@ public:
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
-    gl::ProgramRef mProgram, mDepthProgram;
+    gl::ProgramVariants mPrograms;     // per FrameSwitches
+    gl::ProgramRef mDepthProgram;
 };
 
 } // namespace gi::render

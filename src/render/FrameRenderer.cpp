@@ -5,6 +5,7 @@
 #include "gi/vpl/VplGi.h"
 #include "gl/Limits.h"
 #include "gl/Shared.h"
+#include "render/FrameSwitches.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -180,11 +181,9 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
     frame.inverseViewProjection = glm::inverse(frame.viewProjection);
     frame.view = camera.view;
     frame.cameraPosition = glm::vec4(camera.eye, 1.0f);
-    const int shadingModel = mSettings.glossyMaterials() ? SHADING_GLTF
-                             : mSettings.specular > 0.0f ? SHADING_PHONG
-                                                         : SHADING_LAMBERT;
-    frame.shading = glm::vec4(mSettings.specular, mSettings.shininess, float(shadingModel),
-            mSettings.shadow.enabled ? 1.0f : 0.0f);
+    const FrameSwitches switches = FrameSwitches::of(mSettings);
+    frame.shading = glm::vec4(mSettings.specular, mSettings.shininess,
+            float(switches.shadingModel), switches.shadows ? 1.0f : 0.0f);
     const int outputKind = output == OutputComponent::Final    ? OUTPUT_FINAL
                            : output == OutputComponent::Direct ? OUTPUT_DIRECT
                                                                : OUTPUT_INDIRECT;
@@ -193,7 +192,7 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
     frame.sky = glm::vec4(scene::skyRadiance(mLights) * mScene->exposure(), 0.0f);
     // Shadow rays start 1e-4 of the scene's size off the surface, as far in any scene.
     const float offset = 1e-4f * std::max(glm::length(mScene->bounds().size()), 1e-12f);
-    frame.shadowing = glm::vec4(float(mSettings.shadow.method), float(mSettings.shadow.rays), offset, 0.0f);
+    frame.shadowing = glm::vec4(float(switches.shadowMethod), float(mSettings.shadow.rays), offset, 0.0f);
     glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
 }
 
@@ -248,7 +247,8 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy->voxelUniforms.id());
     }
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
-                             mSettings.depthPrepass, gi.indirectSpecular},
+                             mSettings.depthPrepass, gi.indirectSpecular,
+                             FrameSwitches::of(mSettings)},
             {mTarget}, profiler);
 }
 

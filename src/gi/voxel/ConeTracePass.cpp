@@ -51,7 +51,8 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     const VoxelTextures& voxels = in.textures;
-    const GLuint program = mPrograms.id({voxels.resolution, voxels.levels, voxels.anisotropic});
+    const GLuint program = mPrograms.id(
+            VoxelShape{voxels.resolution, voxels.levels, voxels.anisotropic}.defines());
     // Pixel x of the strided image stands for pixel stride x + phase of the whole trace:
     // shifting NDC by (1 - (2 phase + 1) / stride) / size puts its centre on that pixel's.
     const glm::vec2 offset =

@@ -14,6 +14,7 @@
 #include "gi/voxel/VoxelShape.h"
 #include "gi/voxel/VoxelTextures.h"
 #include "gl/GpuProfiler.h"
+#include "gl/ProgramVariants.h"
 #include "gl/RenderTarget.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
@@ -54,7 +55,7 @@ public:
 private:
     void bindSpecularTarget();
 
-    ShapedPrograms mPrograms;          // the trace, built for the cascade's shape
+    gl::ProgramVariants mPrograms;     // the trace, built per cascade shape (VoxelShape.h)
     gl::ProgramRef mDepthProgram;      // the depth pre-pass
     gl::RenderTarget mTarget{"voxel/trace", {GL_RGBA16F, "voxel/indirect", true},
             {GL_DEPTH_COMPONENT32F, "voxel/trace_depth"}};

@@ -1,0 +1,23 @@
+#include "render/FrameSwitches.h"
+
+#include "gl/Shared.h"
+
+namespace gi::render {
+
+FrameSwitches FrameSwitches::of(const Settings& settings) {
+    FrameSwitches switches;
+    switches.shadingModel = settings.glossyMaterials() ? SHADING_GLTF
+                            : settings.specular > 0.0f ? SHADING_PHONG
+                                                       : SHADING_LAMBERT;
+    switches.shadowMethod = int(settings.shadow.method);
+    switches.shadows = settings.shadow.enabled;
+    return switches;
+}
+
+std::vector<std::string> FrameSwitches::defines() const {
+    return {"FRAME_SHADING_MODEL " + std::to_string(shadingModel),
+            "FRAME_SHADOW_METHOD " + std::to_string(shadowMethod),
+            std::string("FRAME_SHADOWS ") + (shadows ? "1" : "0")};
+}
+
+} // namespace gi::render
