@@ -108,6 +108,7 @@ std::vector<BenchConfiguration> suiteConfigurations(SuiteSize size, const SuiteS
             configuration(GiMode::Voxel, kSuiteVoxel, {}, 1.0),
             configuration(GiMode::Voxel, kSuiteVoxelQuality, voxelQualityPreset(), 4.0),
             configuration(GiMode::Atlas, kSuiteAtlas, {}, 2.0),
+            configuration(GiMode::Vpl, kSuiteVpl, {}, 3.0),
     };
     // The atlas' own target: voxel visibility, every sample set of atlas.target_samples
     // accumulated. Sponza's atlas is too slow on a software rasterizer for the CI form.
@@ -131,7 +132,7 @@ std::vector<BenchConfiguration> suiteConfigurations(SuiteSize size, const SuiteS
 
 SuiteTarget suiteTarget(SceneKind kind, const std::string& configuration) {
     SuiteTarget target;
-    if (isCornell(kind) && configuration == kSuiteVoxel) {
+    if (isCornell(kind) && (configuration == kSuiteVoxel || configuration == kSuiteVpl)) {
         target.maxRelRmseIndirect = 0.30;
         target.minEnergy = 0.9;
         target.maxEnergy = 1.1;
@@ -141,6 +142,9 @@ SuiteTarget suiteTarget(SceneKind kind, const std::string& configuration) {
         target.maxRelRmseIndirect = 0.12;
         target.minEnergy = 0.95;
         target.maxEnergy = 1.05;
+    } else if (kind == SceneKind::Sponza && configuration == kSuiteVpl) {
+        target.minEnergy = 0.85;
+        target.maxEnergy = 1.15;
     } else if (kind == SceneKind::Sponza && configuration == kSuiteVoxel) {
         target.minEnergy = 0.85;
         target.maxEnergy = 1.15;
