@@ -162,7 +162,9 @@ UiFrame ViewerSession::uiFrame(double frameMs) const {
     frame.timings = mProfiler.timings();
     frame.memory = mRenderer->memory();
     frame.mode = render::modeEntry(mMode).label;
-    if (const GiTechnique* technique = mRenderer->technique()) {
+    if (const auto vpl = mRenderer->vplReport()) {
+        frame.giStatus = vpl::describeVpl(*vpl, frame.timings);
+    } else if (const GiTechnique* technique = mRenderer->technique()) {
         frame.giStatus = technique->status();
     }
     frame.shadowStatus = render::describeShadowMethod(mRenderer->shadowReport());

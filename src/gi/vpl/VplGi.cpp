@@ -4,6 +4,7 @@
 #include "gl/Shared.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 namespace gi::vpl {
@@ -24,6 +25,11 @@ float largestLitArea(const std::vector<RsmTexel>& texels, std::size_t lightCount
         }
     }
     return area.empty() ? 0.0f : float(*std::max_element(area.begin(), area.end()));
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
 }
 
 } // namespace
@@ -79,10 +85,22 @@ void VplGi::addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrame
 void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const std::vector<scene::LightView> views =
             scene::lightViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
+    // The RSM readback waits for the GPU, so wall clock measures its draws too.
+    const auto rsmStart = std::chrono::steady_clock::now();
     const std::vector<RsmTexel> texels =
             mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
+    mLastResampling.rsmMs = millisecondsSince(rsmStart);
+    mLastResampling.rsmViews = int(views.size());
+    mLastResampling.rsmTexels = texels.size();
     const int firstGeneration = generationCounts().x;
-    std::vector<shader::GpuVpl> vpls = drawVpls(texels, firstGeneration);
+    const auto samplingStart = std::chrono::steady_clock::now();
+    std::vector<shader::GpuVpl> vpls;
+    {
+        gl::GpuScope scope(profiler, "vpl/sample");
+        vpls = drawVpls(texels, firstGeneration);
+    }
+    mLastResampling.samplingMs = millisecondsSince(samplingStart);
+    ++mLastResampling.resamples;
     mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(firstGeneration);
     addSecondGeneration(vpls, in, profiler);
     mVplCount = int(vpls.size());
@@ -130,8 +148,9 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                     mSource.occupancyVersion != in.occupancy->version);
     if (stale) resample(in, profiler);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
-    writeUniforms(occupancy ? VPL_VISIBILITY_CASCADE
-                            : octree ? VPL_VISIBILITY_SVO : VPL_VISIBILITY_NONE);
+    mVisibility = occupancy ? VPL_VISIBILITY_CASCADE
+                            : octree ? VPL_VISIBILITY_SVO : VPL_VISIBILITY_NONE;
+    writeUniforms(mVisibility);
     mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
     mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree}, profiler);
     mFilter.execute({mGather.result(), mGBuffer, mUniforms}, profiler);
@@ -144,6 +163,19 @@ GiOutputs VplGi::outputs() const {
     out.indirect = &mFilter.result();
     out.size = mGBuffer.size();
     return out;
+}
+
+VplReport VplGi::report() const {
+    VplReport r = mLastResampling;
+    r.count = mVplCount;
+    r.secondGeneration = mSecondGenerationCount;
+    r.clampArea = clampArea();
+    r.clampFromScene = !(mSettings.clamp > 0.0f);
+    r.visibility = mVisibility == mSettings.visibility ? visibilityName(mSettings)
+                                                       : "none (no occupancy volume)";
+    r.interleave = mSettings.interleave;
+    r.rsmResolution = mSettings.rsmResolution;
+    return r;
 }
 
 std::string VplGi::status() const {

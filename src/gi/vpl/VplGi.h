@@ -26,6 +26,7 @@
 #include "gi/vpl/VplGBufferPass.h"
 #include "gi/vpl/SvoVisibility.h"
 #include "gi/vpl/VplGatherPass.h"
+#include "gi/vpl/VplReport.h"
 
 namespace gi::vpl {
 
@@ -49,6 +50,8 @@ public:
     int vplCount() const { return mVplCount; }
     // B (m^2) of the gather's 1 / max(B, r^2).
     float clampArea() const;
+    // The last resampling and this frame's gather, for --timings, the overlay and tests.
+    [[nodiscard]] VplReport report() const;
 
 private:
     // What the VPLs were drawn from: another state draws them anew.
@@ -75,6 +78,8 @@ private:
     int mSecondGenerationCount = 0;
     bool mWarnedNoOccupancy = false;
     bool mHasOutput = false;
+    int mVisibility = VPL_VISIBILITY_NONE;   // VPL_VISIBILITY_* of this frame's gather
+    VplReport mLastResampling;   // its RSM and sampling fields
 
     gl::Buffer mVpls;
     gl::Buffer mUniforms;
