@@ -20,6 +20,7 @@
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/vpl/VplDebugPass.h"
 #include "gi/vpl/ReflectiveShadowMapPass.h"
 #include "gi/vpl/VplBouncePass.h"
 #include "gi/vpl/VplFilterPass.h"
@@ -69,7 +70,7 @@ private:
     void addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
             gl::GpuProfiler& profiler);
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
-    void writeUniforms(int visibility);
+    void writeUniforms(int visibility, int gatherOutput);
 
     VplSettings mSettings;
     float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
@@ -79,6 +80,7 @@ private:
     bool mWarnedNoOccupancy = false;
     bool mHasOutput = false;
     int mVisibility = VPL_VISIBILITY_NONE;   // VPL_VISIBILITY_* of this frame's gather
+    int mDebugView = -1;   // VPL_DEBUG_* shown this frame, -1 = none
     VplReport mLastResampling;   // its RSM and sampling fields
 
     gl::Buffer mVpls;
@@ -89,6 +91,7 @@ private:
     VplGatherPass mGather;
     VplFilterPass mFilter;
     SvoVisibility mSvo;
+    VplDebugPass mDebug;
 };
 
 } // namespace gi::vpl
