@@ -1,6 +1,6 @@
 // What VPL mode reports about itself: every pass and buffer in `render --timings`, the VPLs'
-// last resampling (which runs before the timed frames), the memory `info` plans for it, and
-// its debug views through --output.
+// last resampling (which runs before the timed frames), the memory `info` plans for it, its
+// debug views through --output, and its refusal of bad settings in every command.
 #include "Process.h"
 
 #include "core/ImageIO.h"
@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -103,6 +104,75 @@ TEST(VplReportCommand, TimingsListEveryPassTheResamplingAndTheBuffersInfoPlans) 
         EXPECT_TRUE(timings["memory_bytes"].contains(name)) << name << " planned, not allocated";
     }
     EXPECT_EQ(vpl["bytes"].get<std::size_t>(), vplBytes);
+    fs::remove_all(dir);
+}
+
+// Each debug view renders through --output: the VPLs as coloured discs (the Cornell box's red
+// and green walls give red and green VPLs), and the visibility as grey in [0, 1] with shadows.
+TEST(VplReportCommand, DebugViewsRenderThroughOutput) {
+    const std::string dir = makeTempDir("vpl-debug-views");
+    auto render = [&](const std::string& output, std::vector<std::string> extra = {}) {
+        std::vector<std::string> args = {"render", kCornell, "--mode", "vpl", "--output",
+                output, "--width", "64", "--height", "64", "--out", dir + "/" + output + ".png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ProcessResult r = runVoxatlas(args);
+        EXPECT_EQ(r.exitCode, 0) << output << ": " << r.err;
+        core::Image image;
+        std::string error;
+        EXPECT_TRUE(core::readPng(dir + "/" + output + ".png", image, error)) << error;
+        return image;
+    };
+    auto countPixels = [](const core::Image& image, auto predicate) {
+        int count = 0;
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x) count += predicate(image.at(x, y)) ? 1 : 0;
+        }
+        return count;
+    };
+    const auto reddish = [](glm::vec3 c) { return c.r > 0.5f && c.g < 0.5f * c.r; };
+    const auto greenish = [](glm::vec3 c) { return c.g > 0.5f && c.r < 0.5f * c.g; };
+    const core::Image points = render("vpl-points");
+    EXPECT_GT(countPixels(points, reddish), 0) << "no VPL on the red wall";
+    EXPECT_GT(countPixels(points, greenish), 0) << "no VPL on the green wall";
+
+    // One class holds a sixteenth of the VPLs: fewer coloured discs than every VPL gives.
+    const auto coloured = [](glm::vec3 c) {
+        return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.3f;
+    };
+    const core::Image subset = render("vpl-subset", {"--set", "vpl.debug_subset=3"});
+    EXPECT_LT(countPixels(subset, coloured), countPixels(points, coloured));
+
+    const core::Image visibility = render("vpl-visibility");
+    EXPECT_EQ(countPixels(visibility, [](glm::vec3 c) { return c.r != c.g || c.g != c.b; }), 0)
+            << "the visibility view is grey";
+    EXPECT_GT(countPixels(visibility, [](glm::vec3 c) { return c.r > 0.9f; }), 64 * 64 / 4);
+    EXPECT_GT(countPixels(visibility, [](glm::vec3 c) { return c.r < 0.7f; }), 0)
+            << "the blocks shadow some VPLs";
+    fs::remove_all(dir);
+}
+
+// Bad VPL settings are refused by every command with exit 2 and one line naming the key.
+TEST(VplReportCommand, EveryCommandRefusesBadVplSettings) {
+    const std::string dir = makeTempDir("vpl-refusals");
+    const std::vector<std::vector<std::string>> commands = {
+            {"render", kCornell, "--mode", "vpl", "--out", dir + "/a.png"},
+            {"info", kCornell},
+            {"bench", "--suite", "quick", "--scene", "cornell_classic", "--out-dir", dir + "/s"},
+    };
+    for (const auto& command : commands) {
+        for (const char* bad : {"vpl.count=0", "vpl.clamp=-0.5", "vpl.debug_subset=16"}) {
+            std::vector<std::string> args = command;
+            args.insert(args.end(), {"--set", bad});
+            const ProcessResult r = runVoxatlas(args);
+            const std::string what = command[0] + " --set " + bad;
+            EXPECT_EQ(r.exitCode, 2) << what << ": " << r.err;
+            EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << what << ": " << r.err;
+            const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
+            EXPECT_NE(r.err.find(key), std::string::npos) << what << ": " << r.err;
+        }
+    }
+    EXPECT_FALSE(fs::exists(dir + "/a.png"));
+    EXPECT_FALSE(fs::exists(dir + "/s"));
     fs::remove_all(dir);
 }
 

@@ -21,8 +21,8 @@ void VplDebugPass::execute(int view, const Inputs& in, gl::GpuProfiler& profiler
     if (size.x <= 0 || size.y <= 0) return;
     if (size != mSize) {
         mSize = size;
-        mIds = gl::createTargetTexture({GL_R32UI, "vpl/debug_ids"}, size);
-        mImage = gl::createTargetTexture({GL_RGBA32F, "vpl/debug_image"}, size);
+        mIds = gl::createTargetTexture({GL_R32UI, "vpl/debug_view_ids"}, size);
+        mImage = gl::createTargetTexture({GL_RGBA32F, "vpl/debug_view"}, size);
     }
     gl::GpuScope scope(profiler, "vpl/debug_view");
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VPL, in.uniforms.id());
