@@ -139,6 +139,9 @@ void printVplMemory(const scene::Scene& scene, const std::vector<scene::Light>& 
     }
     if (settings.vpl.visibility == VPL_VISIBILITY_CASCADE) {
         std::printf("    and the voxel occupancy vpl.visibility=cascade marches\n");
+    } else if (settings.vpl.visibility == VPL_VISIBILITY_SVO) {
+        std::printf("    and the sparse voxel octree, at most vpl.svo_budget_mb = %d MiB of nodes\n",
+                settings.vpl.svoBudgetMb);
     }
 }
 

@@ -106,6 +106,7 @@ void addVplSweep(std::vector<BenchConfiguration>& list, bool full) {
         list.push_back(vpl(std::string("count ") + count, {{"vpl.count", count}}));
     }
     list.push_back(vpl("visibility none", {{"vpl.visibility", "none"}}));
+    list.push_back(vpl("visibility svo", {{"vpl.visibility", "svo"}}));
     if (!full) return;
     // B in m^2: a millimetre-scale, a centimetre-scale and a decimetre-scale cut of 1/r^2.
     for (const char* clamp : {"1e-05", "0.0001", "0.01"}) {

@@ -43,9 +43,11 @@ struct VplReport {
 
 // The GPU memory the mode allocates at `settings` for a render of `renderSize` pixels, a row
 // per label as the renderer reports it: one set of RSM textures (every light view is drawn
-// into it in turn and read back), the VPL buffer, the uniforms, the camera G-buffer, the
-// gather's interleaved result and the filter's merged one. The voxel occupancy that
-// vpl.visibility=cascade marches is the voxel mode's (reported under "occupancy/").
+// into it in turn and read back), the VPL buffer, the uniforms (the octree's too, made with the
+// technique), the camera G-buffer, the gather's interleaved result and the filter's merged one.
+// Not included: the voxel occupancy that vpl.visibility=cascade marches (the voxel mode's,
+// reported under "occupancy/") and the sparse voxel octree of vpl.visibility=svo, whose size
+// depends on the geometry (at most vpl.svo_budget_mb of nodes).
 [[nodiscard]] std::vector<gl::MemoryItem> plannedVplMemory(const VplSettings& settings,
         glm::ivec2 renderSize);
 
