@@ -162,10 +162,12 @@ UiFrame ViewerSession::uiFrame(double frameMs) const {
     frame.timings = mProfiler.timings();
     frame.memory = mRenderer->memory();
     frame.mode = render::modeEntry(mMode).label;
-    if (const auto vpl = mRenderer->vplReport()) {
-        frame.giStatus = vpl::describeVpl(*vpl, frame.timings);
-    } else if (const GiTechnique* technique = mRenderer->technique()) {
-        frame.giStatus = technique->status();
+    if (const GiTechnique* technique = mRenderer->technique()) {
+        const auto vpl = mRenderer->vplReport();
+        // A refused setting (an octree over its budget) says why instead.
+        frame.giStatus = vpl && technique->failure().empty()
+                                 ? vpl::describeVpl(*vpl, frame.timings)
+                                 : technique->status();
     }
     frame.shadowStatus = render::describeShadowMethod(mRenderer->shadowReport());
     frame.plan = render::describePlan(mRenderer->plan());

@@ -29,10 +29,16 @@ std::string visibilityName(const VplSettings& settings) {
 
 std::string describeVpl(const VplReport& report, const std::vector<gl::PassTiming>& passes) {
     char text[320];
+    char generations[48] = "";
+    if (report.secondGeneration > 0) {
+        std::snprintf(generations, sizeof generations, " (%d of the second generation)",
+                report.secondGeneration);
+    }
     std::snprintf(text, sizeof text,
-            "VPL: %d VPLs, B %.3g m^2%s, visibility %s, %s | last resampling: RSM %d views "
+            "VPL: %d VPLs%s, B %.3g m^2%s, visibility %s, %s | last resampling: RSM %d views "
             "%dx%d %.1f ms, sampling %.1f ms",
-            report.count, double(report.clampArea), report.clampFromScene ? " (auto)" : "",
+            report.count, generations, double(report.clampArea),
+            report.clampFromScene ? " (auto)" : "",
             report.visibility.c_str(), report.interleave ? "4x4 tiles" : "every VPL per pixel",
             report.rsmViews, report.rsmResolution, report.rsmResolution, report.rsmMs,
             report.samplingMs);
