@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Draws the speed/accuracy trade of `voxatlas bench`: relative RMSE of the indirect component
 against frame time (log x), one subplot per scene, one marker set per series (voxel, atlas,
-atlas progressive), each series' Pareto frontier (the CSV's `pareto` column) as a step line with
+atlas progressive, vpl), each series' Pareto frontier (the CSV's `pareto` column) as a step line with
 its points labelled, and the reference's own noise as a dashed floor line.
 
 usage: plot_pareto.py bench.csv pareto.png
@@ -17,6 +17,7 @@ SERIES_STYLE = {
     "voxel": ("tab:blue", "o"),
     "atlas": ("tab:orange", "s"),
     "atlas progressive": ("tab:green", "^"),
+    "vpl": ("tab:purple", "P"),
 }
 
 

@@ -131,6 +131,9 @@
                                         // unit: no pass binds both)
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
 #define BIND_IMG_VPL_TARGET         5   // rgba16f, the VPL gather's or filter's output
+#define BIND_IMG_VPL_DEBUG_IDS      6   // r32ui, the VPL debug views: the key of the VPL drawn
+                                        // over each pixel (VplDebugPass), 0 = none
+#define BIND_IMG_VPL_DEBUG_TARGET   7   // rgba32f, a VPL debug view's image
 #define BIND_IMG_VOXEL_DIRECTIONAL  5   // rgba16f (6v, v, v*l), voxel.anisotropic: while
                                         // voxelizing and injecting, per face f of a voxel
                                         // rgb = flux / face area of the surfaces seen from f,
@@ -194,6 +197,12 @@
 #define SVO_PASS_FLAG               0             // build pass: flag the nodes of a level
 #define SVO_PASS_ALLOCATE           1             // build pass: give flagged nodes 8 children
 #define SVO_PASS_ADVANCE            2             // build pass: the next level's range
+#define VPL_GATHER_IRRADIANCE       0   // VplUniforms.counts.w: the gather sums E_ind
+#define VPL_GATHER_VISIBLE_FRACTION 1   // ... or writes the mean visibility of the VPLs that
+                                        // face the surface (the vpl-visibility debug view)
+#define VPL_DEBUG_POINTS            0   // VPLs as discs coloured by flux over grey surfaces
+#define VPL_DEBUG_SUBSET            1   // ... one pixel class's VPLs in colour, the rest grey
+#define VPL_DEBUG_VISIBILITY        2   // the mean visibility of the facing VPLs, grey
 
 // Vertex attribute locations of the scene's vertex buffer.
 #define ATTR_POSITION               0   // vec3, world space, metres
@@ -248,6 +257,10 @@
 #define LOC_SVO_LEVEL               29  // int, octree level a build pass works on (root = 0)
 #define LOC_FORWARD_INDIRECT_SPECULAR 30 // int, 1: BIND_TEX_INDIRECT_SPECULAR holds voxel GI's
                                         // specular cone (material.model=gltf)
+#define LOC_VPL_DEBUG_HIGHLIGHT     31  // int, the pixel class (VPL subset) whose VPLs the
+                                        // debug splat highlights; -1 = every VPL
+#define LOC_VPL_DEBUG_RADIUS        32  // int, radius of a highlighted VPL's disc (pixels)
+#define LOC_VPL_DEBUG_VIEW          33  // int, VPL_DEBUG_* the compose pass draws
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]
@@ -396,7 +409,8 @@ struct GpuVpl {                         // std430, one virtual point light
 
 struct VplUniforms {                    // std140
     ivec4 counts;                       // x = VPLs, y = tile edge (VPL_TILE, or 1 without
-                                        // interleaving), z = VPL_VISIBILITY_*, w = unused
+                                        // interleaving), z = VPL_VISIBILITY_*,
+                                        // w = VPL_GATHER_* (what the gather writes)
     vec4 gather;                        // x = clamp B of 1 / max(B, r^2) (m^2), y = the subset
                                         // scale (tiles^2), z = filter depth tolerance
                                         // (fraction of the depth), w = filter normal cosine

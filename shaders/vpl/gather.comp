@@ -34,6 +34,7 @@ void main() {
     int first = inTile.x + tile * inTile.y;
     float clampB = vpl.gather.x;
     vec3 e = vec3(0.0);
+    float visible = 0.0, facing = 0.0;   // the vpl-visibility debug view's counts
     for (int i = first; i < vpl.counts.x; i += stride) {
         GpuVpl light = vpls[i];
         vec3 d = light.position.xyz - x;
@@ -44,6 +45,12 @@ void main() {
         if (cosX <= 0.0 || cosI <= 0.0) continue;
         float visibility = vplVisibility(x, n, light.position.xyz, light.normal.xyz);
         e += light.flux.rgb * (visibility * cosX * cosI / (PI * max(clampB, r2)));
+        visible += visibility;
+        facing += 1.0;
+    }
+    if (vpl.counts.w == VPL_GATHER_VISIBLE_FRACTION) {
+        imageStore(target, pixel, vec4(vec3(visible / max(facing, 1.0)), position.w));
+        return;
     }
     imageStore(target, pixel, vec4(min(e * vpl.gather.y, vec3(HALF_STORE_MAX)), position.w));
 }

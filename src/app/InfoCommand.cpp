@@ -1,10 +1,13 @@
 #include "app/InfoCommand.h"
 
 #include "app/SceneSetup.h"
+#include "gi/vpl/VplReport.h"
+#include "gl/Shared.h"
 #include "render/ResourcePlan.h"
 #include "render/ShadowMethodReport.h"
 #include "scene/Animation.h"
 #include "scene/GpuScene.h"
+#include "scene/LightViews.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -120,6 +123,28 @@ void printSceneMemory(const scene::Scene& scene) {
     std::printf("  total          %10.2f MiB\n", mebibytes(vertexBytes + indexBytes + textureBytes));
 }
 
+// The VPL mode's GPU memory at `settings`, for render's default image size (512 x 512 x
+// render.supersample): the RSM views are drawn one after another into one set of textures.
+void printVplMemory(const scene::Scene& scene, const std::vector<scene::Light>& lights,
+        const Settings& settings) {
+    const glm::ivec2 size = glm::ivec2(512) * settings.supersample;
+    const int views = int(scene::lightViews(lights, scene.bounds, settings.vpl.rsmResolution).size());
+    const std::vector<gl::MemoryItem> items = vpl::plannedVplMemory(settings.vpl, size);
+    std::printf("  vpl      %d VPLs, RSMs of %d light view(s) at %d^2 drawn into one set, "
+                "%dx%d G-buffer: %.2f MiB\n",
+            settings.vpl.count, views, settings.vpl.rsmResolution, size.x, size.y,
+            mebibytes(gl::totalBytes(items)));
+    for (const gl::MemoryItem& item : items) {
+        std::printf("    %-22s %10.3f MiB\n", item.name.c_str(), mebibytes(item.bytes));
+    }
+    if (settings.vpl.visibility == VPL_VISIBILITY_CASCADE) {
+        std::printf("    and the voxel occupancy vpl.visibility=cascade marches\n");
+    } else if (settings.vpl.visibility == VPL_VISIBILITY_SVO) {
+        std::printf("    and the sparse voxel octree, at most vpl.svo_budget_mb = %d MiB of nodes\n",
+                settings.vpl.svoBudgetMb);
+    }
+}
+
 } // namespace
 
 int runInfo(const Config& config) {
@@ -147,6 +172,7 @@ int runInfo(const Config& config) {
     const render::ShadowMethodReport shadows =
             render::plannedShadowMethod(scene, render::plannedLights(scene.lights, plan), planned);
     std::printf("  %s\n", render::describeShadowMethod(shadows).c_str());
+    printVplMemory(scene, render::plannedLights(scene.lights, plan), planned);
     return 0;
 }
 

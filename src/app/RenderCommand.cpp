@@ -185,7 +185,7 @@ int runRender(const Config& config) {
                 std::string(context->provider()), context->description(),
                 profiler.mode() == gl::TimingMode::Finish ? "finish" : "queries", width, height,
                 config.settings.frames, profiler.timings(), renderer.memory(),
-                renderer.shadowReport()};
+                renderer.shadowReport(), renderer.vplReport()};
     };
     // Auto exposure meters the pixels that show geometry, not the empty background.
     const std::vector<float> coverage = config.toneMapping.autoExposure

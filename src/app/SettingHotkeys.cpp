@@ -12,6 +12,10 @@ const std::vector<SettingHotkey>& settingHotkeys() {
                 [](Settings& s, float) {
                     s.voxel.debugLevel = (s.voxel.debugLevel + 1) % s.voxel.levels;
                 }},
+        {"Y", "pixel class whose VPLs the vpl-subset view highlights", "vpl.debug_subset",
+                [](Settings& s, float) {
+                    s.vpl.debugSubset = (s.vpl.debugSubset + 1) % (VPL_TILE * VPL_TILE);
+                }},
         {"F1", "voxel resolution / 2", "voxel.resolution",
                 [](Settings& s, float) { s.voxel.resolution = std::max(8, s.voxel.resolution / 2); }},
         {"F2", "voxel resolution x 2", "voxel.resolution",

@@ -163,7 +163,11 @@ UiFrame ViewerSession::uiFrame(double frameMs) const {
     frame.memory = mRenderer->memory();
     frame.mode = render::modeEntry(mMode).label;
     if (const GiTechnique* technique = mRenderer->technique()) {
-        frame.giStatus = technique->status();
+        const auto vpl = mRenderer->vplReport();
+        // A refused setting (an octree over its budget) says why instead.
+        frame.giStatus = vpl && technique->failure().empty()
+                                 ? vpl::describeVpl(*vpl, frame.timings)
+                                 : technique->status();
     }
     frame.shadowStatus = render::describeShadowMethod(mRenderer->shadowReport());
     frame.plan = render::describePlan(mRenderer->plan());

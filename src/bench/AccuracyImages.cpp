@@ -74,7 +74,8 @@ bool writeAccuracyImage(const std::string& path, const SuiteSceneResult& result,
     const core::Image& truth = result.reference.indirect;
     const BenchMeasurement* voxel = panelSource(result, {kSuiteVoxel});
     const BenchMeasurement* atlas = panelSource(result, {kSuiteAtlasConverged, kSuiteAtlas});
-    const float exposure = stripExposure(result, {voxel, atlas});
+    const BenchMeasurement* vpl = panelSource(result, {kSuiteVpl});
+    const float exposure = stripExposure(result, {voxel, atlas, vpl});
     double mean = meanGeometryLuminance(truth, result.reference.coverage);
     if (!(mean > 0.0) && voxel) {
         mean = meanGeometryLuminance(voxel->indirectImage, result.reference.coverage);
@@ -90,8 +91,10 @@ bool writeAccuracyImage(const std::string& path, const SuiteSceneResult& result,
             core::applyToneMapping(truth, exposure, core::ToneCurve::Filmic),
             shown(voxel),
             shown(atlas),
+            shown(vpl),
             voxel ? errorMap(voxel->indirectImage, truth, scale) : blank,
             atlas ? errorMap(atlas->indirectImage, truth, scale) : blank,
+            vpl ? errorMap(vpl->indirectImage, truth, scale) : blank,
     };
     const int count = int(std::size(panels));
     core::Image strip(count * truth.width + (count - 1) * kGap, truth.height);

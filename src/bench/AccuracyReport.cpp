@@ -112,7 +112,8 @@ const char* kindName(SceneKind kind) {
 }
 
 std::vector<std::string> configurationNames() {
-    return {kSuiteDirect, kSuiteVoxel, kSuiteVoxelQuality, kSuiteAtlas, kSuiteAtlasConverged};
+    return {kSuiteDirect, kSuiteVoxel, kSuiteVoxelQuality, kSuiteAtlas, kSuiteAtlasConverged,
+            kSuiteVpl};
 }
 
 const SuiteScore* findScore(const std::vector<SuiteScore>& scores, const std::string& scene,
@@ -263,7 +264,8 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
         << " after.\n\n"
         << "Configurations: **direct** no GI; **voxel** the defaults; **voxel quality** "
            "v=64, full-resolution trace, injection at 4v; **atlas** the defaults, one frame; **atlas converged** "
-           "`atlas.visibility=voxel`, accumulated to `atlas.target_samples`.\n\n";
+           "`atlas.visibility=voxel`, accumulated to `atlas.target_samples`; **vpl** the "
+           "defaults (`vpl.count` VPLs, cascade visibility, 4x4 interleaving).\n\n";
     for (const std::string& note : info.notes) out << "Note: " << note << "\n\n";
     out << "Why each missed target is missed, and what was tried: `accuracy-analysis.md`.\n\n";
 
@@ -302,7 +304,7 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
     }
     scenesSection(out, results);
     out << "## Images\n\nIndirect light, each row: reference | voxel | atlas (converged where "
-           "run) | voxel error | atlas error. The three images share the reference's auto "
+           "run) | vpl | voxel error | atlas error | vpl error. The four images share the reference's auto "
            "exposure and the filmic curve; the error maps show |ours - reference| on a heat "
            "scale where white is the reference's mean indirect luminance.\n\n";
     for (const SuiteSceneResult& r : results) {

@@ -1,6 +1,7 @@
 // The accuracy scoreboard (`voxatlas bench --suite`): every scene of assets/scene_suite/ plus
-// two lightings of Sponza, each rendered in direct, voxel (default and the quality preset) and
-// atlas mode (default, and progressive to convergence with voxel visibility), and scored against
+// two lightings of Sponza, each rendered in direct, voxel (default and the quality preset),
+// atlas (default, and progressive to convergence with voxel visibility) and VPL mode (default),
+// and scored against
 // the one-bounce path tracer. A result on one scene is not a result: every GI change answers to
 // all of them, with one set of defaults.
 //
@@ -59,6 +60,7 @@ inline constexpr const char* kSuiteVoxel = "voxel";
 inline constexpr const char* kSuiteVoxelQuality = "voxel quality";
 inline constexpr const char* kSuiteAtlas = "atlas";
 inline constexpr const char* kSuiteAtlasConverged = "atlas converged";
+inline constexpr const char* kSuiteVpl = "vpl";
 
 // The configurations scored on `scene`; BenchConfiguration::label is one of the names above.
 // The converged atlas accumulates base.atlas.target_samples in sets of base.atlas.samples, and

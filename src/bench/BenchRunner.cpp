@@ -27,7 +27,8 @@ bool startsWith(const std::string& text, const std::string& prefix) {
 // Passes and allocations of the GI techniques (the atlas' voxel visibility counts as atlas
 // cost); the debug views are not part of a frame.
 bool isGiName(const std::string& name) {
-    return (startsWith(name, "voxel/") || startsWith(name, "atlas/")) &&
+    return (startsWith(name, "voxel/") || startsWith(name, "atlas/") ||
+                   startsWith(name, "vpl/")) &&
            name.find("debug_view") == std::string::npos;
 }
 

@@ -75,6 +75,50 @@ BenchConfiguration progressive(int resolution, int samples, int frames) {
     return c;
 }
 
+// Relative cost of a VPL frame: the gather dominates and scales with the VPLs each pixel
+// visits; the voxel occupancy march makes each visit several times dearer.
+double vplCost(int count, bool occluded) {
+    return 0.3 + (occluded ? 1.5 : 0.3) * (double(count) / 1024.0);
+}
+
+BenchConfiguration vpl(std::string label, std::vector<SettingChange> changes) {
+    BenchConfiguration c;
+    c.mode = GiMode::Vpl;
+    c.label = std::move(label);
+    int count = VplSettings{}.count;
+    bool occluded = VplSettings{}.visibility != VPL_VISIBILITY_NONE;
+    for (const SettingChange& change : changes) {
+        if (change.key == "vpl.count") count = std::stoi(change.value);
+        if (change.key == "vpl.visibility") occluded = change.value != "none";
+    }
+    c.changes = std::move(changes);
+    c.costEstimate = vplCost(count, occluded);
+    return c;
+}
+
+// VPL count, clamp B and visibility one at a time around the defaults (1024 VPLs, B from the
+// scene, cascade visibility), and every VPL at every pixel against the interleaved subsets.
+void addVplSweep(std::vector<BenchConfiguration>& list, bool full) {
+    BenchConfiguration base = vpl("base (1024, B auto, cascade)", {});
+    base.base = true;
+    list.push_back(base);
+    for (const char* count : {"256", "512", "2048"}) {
+        list.push_back(vpl(std::string("count ") + count, {{"vpl.count", count}}));
+    }
+    list.push_back(vpl("visibility none", {{"vpl.visibility", "none"}}));
+    list.push_back(vpl("visibility svo", {{"vpl.visibility", "svo"}}));
+    if (!full) return;
+    // B in m^2: a millimetre-scale, a centimetre-scale and a decimetre-scale cut of 1/r^2.
+    for (const char* clamp : {"1e-05", "0.0001", "0.01"}) {
+        list.push_back(vpl(std::string("clamp ") + clamp + " m^2", {{"vpl.clamp", clamp}}));
+    }
+    list.push_back(vpl("count 256, visibility none",
+            {{"vpl.count", "256"}, {"vpl.visibility", "none"}}));
+    list.push_back(vpl("count 2048, visibility none",
+            {{"vpl.count", "2048"}, {"vpl.visibility", "none"}}));
+    list.push_back(vpl("every VPL per pixel", {{"vpl.interleave", "0"}}));
+}
+
 } // namespace
 
 std::vector<SettingChange> voxelQualityPreset() {
@@ -130,8 +174,12 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
         const int resolution = 512;
         BenchConfiguration atlasFew = atlas("res 512, 25 samples", resolution, 25);
         atlasFew.base = true;
+        BenchConfiguration vplBase = vpl("base (1024, B auto, cascade)", {});
+        vplBase.base = true;
         return {direct, voxelBase, voxelFast, atlasFew,
-                progressive(resolution, 25, std::max(4, options.minProgressiveFrames))};
+                progressive(resolution, 25, std::max(4, options.minProgressiveFrames)), vplBase,
+                vpl("count 256, visibility none",
+                        {{"vpl.count", "256"}, {"vpl.visibility", "none"}})};
     }
 
     const std::string shortDistance = formatNumber(options.shortDistance);
@@ -174,6 +222,7 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     if (full) list.push_back(progressive(1024, 100, progressiveFrames));
     list.push_back(atlas("preset fast (512^2, 25 samples)", 512, 25));
     list.push_back(progressive(512, 25, progressiveFrames));
+    addVplSweep(list, full);
     return list;
 }
 

@@ -58,7 +58,8 @@ struct SweepOptions {
 
 [[nodiscard]] std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options);
 
-// The plot series of a configuration: "direct", "voxel", "atlas" or "atlas progressive".
+// The plot series of a configuration: "direct", "voxel", "atlas", "atlas progressive" or
+// "vpl".
 [[nodiscard]] std::string seriesName(const BenchConfiguration& configuration);
 
 // Every key that some configuration changes, in first-use order.

@@ -267,6 +267,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "bounces the VPLs carry: 2 adds VPLs where rays from the first ones meet the "
                 "voxels (a share of vpl.count)",
                 1, 2, [](Settings& s) -> int& { return s.vpl.bounces; }),
+        intSetting("vpl.debug_subset",
+                "pixel class (x mod 4) + 4 (y mod 4) whose VPLs --output vpl-subset highlights",
+                0, 15, [](Settings& s) -> int& { return s.vpl.debugSubset; }),
         boolSetting("gi.temporal_filter",
                 "blend the indirect light with earlier frames reprojected into this view, "
                 "history rejected by depth and normal",

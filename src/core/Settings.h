@@ -98,6 +98,7 @@ struct VplSettings {
     bool interleave = true;       // vpl.interleave: 4x4 tiles, each pixel 1/16 of the VPLs
     int rsmResolution = 128;      // vpl.rsm_resolution: pixels per side of a light's RSM view
     int bounces = 1;              // vpl.bounces: 2 adds VPLs where the first ones' light lands
+    int debugSubset = 0;          // vpl.debug_subset: the pixel class vpl-subset highlights
     bool operator==(const VplSettings&) const = default;
 };
 

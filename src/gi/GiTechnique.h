@@ -25,7 +25,8 @@ namespace gi {
 // Views a technique can show instead of the final image (--output and viewer hotkeys).
 enum class DebugView {
     None, VoxelAlbedo, VoxelIrradiance, VoxelNormal,
-    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts
+    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts,
+    VplPoints, VplSubset, VplVisibility
 };
 
 // A voxel occupancy another technique can test visibility against (the atlas gather's

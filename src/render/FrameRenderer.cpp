@@ -322,6 +322,11 @@ ShadowMethodReport FrameRenderer::shadowReport() const {
     return report;
 }
 
+std::optional<vpl::VplReport> FrameRenderer::vplReport() const {
+    if (mMode != GiMode::Vpl || !mGi) return std::nullopt;
+    return static_cast<const vpl::VplGi&>(*mGi).report();
+}
+
 std::vector<gl::MemoryItem> FrameRenderer::memory() const {
     std::vector<gl::MemoryItem> items = mMemory.report();
     for (gl::MemoryItem& item : mOccupancyMemory.report()) items.push_back(std::move(item));

@@ -19,6 +19,7 @@
 #include "render/TemporalFilter.h"
 #include "gi/GiTechnique.h"
 #include "gi/voxel/VoxelizationManager.h"
+#include "gi/vpl/VplReport.h"
 #include "core/Image.h"
 #include "core/Settings.h"
 #include "scene/Scene.h"
@@ -82,6 +83,8 @@ public:
     const LineSpaceStats& lineSpaceStats() const { return mLineSpace.stats(); }
     // The active shadow method's structure, last build and memory.
     [[nodiscard]] ShadowMethodReport shadowReport() const;
+    // The VPL technique's VPLs, clamp, visibility and last resampling; nullopt in other modes.
+    [[nodiscard]] std::optional<vpl::VplReport> vplReport() const;
     // The active GI technique, or nullptr in direct mode.
     const GiTechnique* technique() const { return mGi.get(); }
 

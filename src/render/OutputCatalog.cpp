@@ -7,6 +7,7 @@ namespace {
 
 constexpr ModeMask kVoxel = modeBit(GiMode::Voxel);
 constexpr ModeMask kAtlas = modeBit(GiMode::Atlas);
+constexpr ModeMask kVpl = modeBit(GiMode::Vpl);
 
 constexpr ModeEntry kModes[] = {
         {GiMode::Direct, "direct", "direct", "direct light only, no GI", true},
@@ -43,6 +44,12 @@ constexpr OutputEntry kOutputs[] = {
                 kAtlas, "gathered indirect irradiance E_ind, shown as E_ind/pi"},
         {OutputComponent::AtlasCharts, "atlas-charts", DebugView::AtlasCharts, false, kAtlas,
                 "a random colour per atlas chart"},
+        {OutputComponent::VplPoints, "vpl-points", DebugView::VplPoints, false, kVpl,
+                "the VPLs the camera sees, coloured by their flux, over grey surfaces"},
+        {OutputComponent::VplSubset, "vpl-subset", DebugView::VplSubset, false, kVpl,
+                "the VPLs of pixel class vpl.debug_subset of the 4x4 tiles in colour, the rest grey"},
+        {OutputComponent::VplVisibility, "vpl-visibility", DebugView::VplVisibility, false, kVpl,
+                "mean visibility of the VPLs facing each surface, 1 = white"},
 };
 
 } // namespace

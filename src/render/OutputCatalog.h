@@ -17,7 +17,8 @@ enum class GiMode { Direct, Voxel, Atlas, Vpl, Reference };
 // What a frame shows: a radiance component, or a technique's debug view.
 enum class OutputComponent {
     Final, Direct, Indirect, VoxelAlbedo, VoxelIrradiance, VoxelNormal,
-    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts
+    AtlasDirect, AtlasNormal, AtlasPosition, AtlasAlbedo, AtlasIndirect, AtlasCharts,
+    VplPoints, VplSubset, VplVisibility
 };
 
 struct ModeEntry {

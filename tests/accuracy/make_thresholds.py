@@ -20,7 +20,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "AccuracyThresholds.inc")
-CONFIGURATIONS = ("voxel", "voxel quality", "atlas", "atlas converged")
+CONFIGURATIONS = ("voxel", "voxel quality", "atlas", "atlas converged", "vpl")
 
 
 def margin(value):

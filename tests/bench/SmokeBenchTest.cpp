@@ -39,7 +39,7 @@ TEST(SmokeBench, CoversBothScenesAndEveryModeWithFiniteFigures) {
     EXPECT_EQ(table.distinct("scene"), scenes);
     for (const std::string& scene : scenes) {
         EXPECT_EQ(table.distinct("mode", "scene", scene),
-                (std::set<std::string>{"direct", "voxel", "atlas"}))
+                (std::set<std::string>{"direct", "voxel", "atlas", "vpl"}))
                 << "a mode is missing on " << scene;
     }
     EXPECT_TRUE(table.distinct("series").count("atlas progressive"));

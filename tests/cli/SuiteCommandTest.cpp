@@ -23,15 +23,17 @@ int lineCount(const std::string& text) {
 
 TEST(SuiteCommand, OneSceneWritesPageTableAndPicture) {
     const std::string dir = makeTempDir("suite-one");
-    // A small atlas and few samples: this checks the command, tests/accuracy the scores.
+    // A small atlas, few samples and few VPLs: this checks the command, tests/accuracy the
+    // scores.
     const ProcessResult r = runVoxatlas({"bench", "--suite", "quick", "--scene",
             "closed_white_box", "--out-dir", dir, "--set", "atlas.resolution=128", "--set",
             "atlas.samples=16", "--set", "atlas.target_samples=64", "--set",
-            "voxel.resolution=16"}, 280);
+            "voxel.resolution=16", "--set", "vpl.count=64"}, 280);
     ASSERT_FALSE(r.timedOut);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     const BenchTable table = readBenchCsv(dir + "/accuracy.csv");
-    ASSERT_EQ(table.rows.size(), 5u) << "direct, voxel, voxel quality, atlas, atlas converged";
+    ASSERT_EQ(table.rows.size(), 6u)
+            << "direct, voxel, voxel quality, atlas, atlas converged, vpl";
     EXPECT_EQ(table.distinct("scene"), std::set<std::string>{"closed_white_box"});
     for (std::size_t row = 0; row < table.rows.size(); ++row) {
         EXPECT_EQ(table.field(row, "available"), "1") << table.field(row, "configuration");

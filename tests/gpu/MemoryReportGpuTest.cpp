@@ -92,7 +92,8 @@ TEST_F(MemoryReportGpuTest, ReportIsWhatTheGlHoldsInEveryMode) {
             {render::GiMode::Direct, std::nullopt},
             {render::GiMode::Voxel, render::OutputComponent::VoxelAlbedo},
             {render::GiMode::Atlas, render::OutputComponent::AtlasCharts},
-            {render::GiMode::Atlas, std::nullopt, ATLAS_VISIBILITY_VOXEL}};
+            {render::GiMode::Atlas, std::nullopt, ATLAS_VISIBILITY_VOXEL},
+            {render::GiMode::Vpl, render::OutputComponent::VplPoints}};
     for (const ModeCase& c : cases) {
         const std::string what = std::string(render::giModeName(c.mode)) +
                 (c.atlasVisibility == ATLAS_VISIBILITY_VOXEL ? " with voxel visibility" : "");
@@ -124,6 +125,9 @@ TEST_F(MemoryReportGpuTest, ReportIsWhatTheGlHoldsInEveryMode) {
             }
             if (c.debugView == render::OutputComponent::AtlasCharts) {
                 EXPECT_TRUE(hasRow(report, "atlas/debug_view"));
+            }
+            if (c.debugView == render::OutputComponent::VplPoints) {
+                EXPECT_TRUE(hasRow(report, "vpl/debug_view"));
             }
             if (c.atlasVisibility == ATLAS_VISIBILITY_VOXEL) {
                 EXPECT_TRUE(hasRow(report, "occupancy/voxel/albedo"));

@@ -66,13 +66,16 @@ TEST(OutputCatalog, DebugViewsBelongToTheirTechniqueOnly) {
                 << entry.name;
         EXPECT_EQ(render::outputAvailable(entry.output, render::GiMode::Direct), !debug)
                 << entry.name;
-        if (debug) {
-            const bool voxel = render::outputAvailable(entry.output, render::GiMode::Voxel);
-            const bool atlas = render::outputAvailable(entry.output, render::GiMode::Atlas);
-            EXPECT_NE(voxel, atlas) << entry.name;
-            EXPECT_EQ(std::string(entry.name).rfind(voxel ? "voxel-" : "atlas-", 0), 0u)
-                    << entry.name;
+        if (!debug) continue;
+        int owners = 0;
+        for (const render::GiMode mode :
+                {render::GiMode::Voxel, render::GiMode::Atlas, render::GiMode::Vpl}) {
+            if (!render::outputAvailable(entry.output, mode)) continue;
+            ++owners;
+            const std::string prefix = std::string(render::giModeName(mode)) + "-";
+            EXPECT_EQ(std::string(entry.name).rfind(prefix, 0), 0u) << entry.name;
         }
+        EXPECT_EQ(owners, 1) << entry.name;
     }
 }
 

@@ -4,6 +4,7 @@
 #include "gl/Shared.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 namespace gi::vpl {
@@ -26,6 +27,21 @@ float largestLitArea(const std::vector<RsmTexel>& texels, std::size_t lightCount
     return area.empty() ? 0.0f : float(*std::max_element(area.begin(), area.end()));
 }
 
+// The VPL_DEBUG_* view behind a technique debug view, or -1.
+int debugViewOf(DebugView view) {
+    switch (view) {
+    case DebugView::VplPoints: return VPL_DEBUG_POINTS;
+    case DebugView::VplSubset: return VPL_DEBUG_SUBSET;
+    case DebugView::VplVisibility: return VPL_DEBUG_VISIBILITY;
+    default: return -1;
+    }
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+}
+
 } // namespace
 
 bool VplGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::string& error) {
@@ -34,7 +50,8 @@ bool VplGi::init(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::str
             sizeof(shader::VplUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT, "vpl/uniforms");
     return mRsm.init(shaders, error) && mGBuffer.init(shaders, error) &&
             mGather.init(shaders, error) && mFilter.init(shaders, error) &&
-            mBounce.init(shaders, error) && mSvo.init(shaders, error);
+            mBounce.init(shaders, error) && mSvo.init(shaders, error) &&
+            mDebug.init(shaders, error);
 }
 
 bool VplGi::configure(const Settings& settings, std::string& error) {
@@ -79,10 +96,22 @@ void VplGi::addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrame
 void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const std::vector<scene::LightView> views =
             scene::lightViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
+    // The RSM readback waits for the GPU, so wall clock measures its draws too.
+    const auto rsmStart = std::chrono::steady_clock::now();
     const std::vector<RsmTexel> texels =
             mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
+    mLastResampling.rsmMs = millisecondsSince(rsmStart);
+    mLastResampling.rsmViews = int(views.size());
+    mLastResampling.rsmTexels = texels.size();
     const int firstGeneration = generationCounts().x;
-    std::vector<shader::GpuVpl> vpls = drawVpls(texels, firstGeneration);
+    const auto samplingStart = std::chrono::steady_clock::now();
+    std::vector<shader::GpuVpl> vpls;
+    {
+        gl::GpuScope scope(profiler, "vpl/sample");
+        vpls = drawVpls(texels, firstGeneration);
+    }
+    mLastResampling.samplingMs = millisecondsSince(samplingStart);
+    ++mLastResampling.resamples;
     mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(firstGeneration);
     addSecondGeneration(vpls, in, profiler);
     mVplCount = int(vpls.size());
@@ -107,10 +136,10 @@ const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
     return in.occupancy;
 }
 
-void VplGi::writeUniforms(int visibility) {
+void VplGi::writeUniforms(int visibility, int gatherOutput) {
     const int tile = mSettings.interleave ? VPL_TILE : 1;
     shader::VplUniforms u{};
-    u.counts = glm::ivec4(mVplCount, tile, visibility, 0);
+    u.counts = glm::ivec4(mVplCount, tile, visibility, gatherOutput);
     u.gather = glm::vec4(clampArea(), float(tile * tile), kFilterDepthTolerance,
             kFilterNormalCosine);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
@@ -130,12 +159,20 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                     mSource.occupancyVersion != in.occupancy->version);
     if (stale) resample(in, profiler);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
-    writeUniforms(occupancy ? VPL_VISIBILITY_CASCADE
-                            : octree ? VPL_VISIBILITY_SVO : VPL_VISIBILITY_NONE);
+    mVisibility = occupancy ? VPL_VISIBILITY_CASCADE
+                            : octree ? VPL_VISIBILITY_SVO : VPL_VISIBILITY_NONE;
+    mDebugView = debugViewOf(in.debugView);
+    writeUniforms(mVisibility, mDebugView == VPL_DEBUG_VISIBILITY ? VPL_GATHER_VISIBLE_FRACTION
+                                                                  : VPL_GATHER_IRRADIANCE);
     mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
     mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree}, profiler);
     mFilter.execute({mGather.result(), mGBuffer, mUniforms}, profiler);
     mHasOutput = mGBuffer.size().x > 0;
+    if (mDebugView >= 0) {
+        mDebug.execute(mDebugView, {mGBuffer, mVpls, mVplCount, mUniforms, in.frameUniforms,
+                                           mFilter.result(), mSettings.debugSubset},
+                profiler);
+    }
 }
 
 GiOutputs VplGi::outputs() const {
@@ -143,7 +180,21 @@ GiOutputs VplGi::outputs() const {
     if (!mHasOutput) return out;
     out.indirect = &mFilter.result();
     out.size = mGBuffer.size();
+    if (mDebugView >= 0) out.debugImage = &mDebug.image();
     return out;
+}
+
+VplReport VplGi::report() const {
+    VplReport r = mLastResampling;
+    r.count = mVplCount;
+    r.secondGeneration = mSecondGenerationCount;
+    r.clampArea = clampArea();
+    r.clampFromScene = !(mSettings.clamp > 0.0f);
+    r.visibility = mVisibility == mSettings.visibility ? visibilityName(mSettings)
+                                                       : "none (no occupancy volume)";
+    r.interleave = mSettings.interleave;
+    r.rsmResolution = mSettings.rsmResolution;
+    return r;
 }
 
 std::string VplGi::status() const {

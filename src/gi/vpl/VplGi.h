@@ -20,12 +20,14 @@
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/vpl/VplDebugPass.h"
 #include "gi/vpl/ReflectiveShadowMapPass.h"
 #include "gi/vpl/VplBouncePass.h"
 #include "gi/vpl/VplFilterPass.h"
 #include "gi/vpl/VplGBufferPass.h"
 #include "gi/vpl/SvoVisibility.h"
 #include "gi/vpl/VplGatherPass.h"
+#include "gi/vpl/VplReport.h"
 
 namespace gi::vpl {
 
@@ -49,6 +51,8 @@ public:
     int vplCount() const { return mVplCount; }
     // B (m^2) of the gather's 1 / max(B, r^2).
     float clampArea() const;
+    // The last resampling and this frame's gather, for --timings, the overlay and tests.
+    [[nodiscard]] VplReport report() const;
 
 private:
     // What the VPLs were drawn from: another state draws them anew.
@@ -66,7 +70,7 @@ private:
     void addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
             gl::GpuProfiler& profiler);
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
-    void writeUniforms(int visibility);
+    void writeUniforms(int visibility, int gatherOutput);
 
     VplSettings mSettings;
     float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
@@ -75,6 +79,9 @@ private:
     int mSecondGenerationCount = 0;
     bool mWarnedNoOccupancy = false;
     bool mHasOutput = false;
+    int mVisibility = VPL_VISIBILITY_NONE;   // VPL_VISIBILITY_* of this frame's gather
+    int mDebugView = -1;   // VPL_DEBUG_* shown this frame, -1 = none
+    VplReport mLastResampling;   // its RSM and sampling fields
 
     gl::Buffer mVpls;
     gl::Buffer mUniforms;
@@ -84,6 +91,7 @@ private:
     VplGatherPass mGather;
     VplFilterPass mFilter;
     SvoVisibility mSvo;
+    VplDebugPass mDebug;
 };
 
 } // namespace gi::vpl
