@@ -109,18 +109,22 @@ TEST_F(GlossyGpuTest, NoSpecularIsLambertianInEveryModel) {
     ASSERT_EQ(a.rgb.size(), b.rgb.size());
     ASSERT_EQ(a.rgb.size(), glossy.rgb.size());
     // Voxelization averages fragments in whatever order the GPU delivers them, so two
-    // frames of one setting may differ a little (llvmpipe over EGL: 0.2% of the peak, the
-    // same between two phong frames): compare with what the glossy model itself changes.
-    float peak = 0.0f, same = 0.0f, changed = 0.0f;
+    // frames of one setting differ a little, and a voxel whose plane moves by a rounding
+    // error can move one pixel by a few percent of the peak (llvmpipe over OSMesa: 1.7%
+    // between the two models without specular): compare the mean absolute difference over
+    // the mean level, against what the glossy model itself changes.
+    double level = 0.0, same = 0.0, changed = 0.0;
     for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-        peak = std::max(peak, a.rgb[i]);
-        same = std::max(same, std::abs(a.rgb[i] - b.rgb[i]));
-        changed = std::max(changed, std::abs(a.rgb[i] - glossy.rgb[i]));
+        level += a.rgb[i];
+        same += std::abs(a.rgb[i] - b.rgb[i]);
+        changed += std::abs(a.rgb[i] - glossy.rgb[i]);
     }
-    std::printf("largest difference: phong vs gltf without specular %.3g, vs gltf %.3g, "
-                "peak %.3g\n", same, changed, peak);
-    EXPECT_LE(same, 1e-2f * peak);
-    EXPECT_GT(changed, 0.05f * peak);
+    same /= level;
+    changed /= level;
+    std::printf("mean difference over the mean level: phong vs gltf without specular %.3g, "
+                "vs gltf %.3g\n", same, changed);
+    EXPECT_LE(same, 2e-3);
+    EXPECT_GT(changed, 0.05);
 }
 
 } // namespace
