@@ -383,12 +383,16 @@ struct VoxelUniforms {                  // std140
                                         // ring cone, z = cos of ring angle, w = sin of it
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
                                         // fragment is discarded, yzw = unused
-    vec4 modes;                         // x = INJECT_* weighting, y = voxelization raster
-                                        // pixel area (m^2), z = 1 for max-axis coverage in
+    vec4 modes;                         // x = INJECT_* weighting, y = unused,
+                                        // z = 1 for max-axis coverage in
                                         // propagation, w = 1 when cone tracing takes a
                                         // coarser level's unit normal for one plane
     vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
                                         // y = 1 to jitter the cone ring per pixel, zw = unused
+    vec4 raster;                        // voxelization: x = 1 to rasterize each level over
+                                        // its own extent, 0 for one raster over the
+                                        // coarsest; y = the raster pixel's area, in voxel
+                                        // face areas per level, else in m^2; zw = unused
 };
 
 struct GpuShadow {                      // std430, one per light

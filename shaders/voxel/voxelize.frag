@@ -20,20 +20,24 @@ layout(binding = BIND_IMG_VOXEL_DIRECTIONAL, rgba16f) coherent uniform image3D v
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 flat in float projectedCosine;
+flat in int rasterLevel;
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
     vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
     if (materialCutOut(m, baseColor.a)) discard;
+    // With a raster per level (voxelize.geom), a fragment in a finer level's region is that
+    // level's.
     int level = finestLevel(vin.position);
-    if (level < 0) discard;
+    if (level < 0 || (rasterLevel >= 0 && level != rasterLevel)) discard;
     ivec3 texel = voxelTexel(vin.position, level);
     vec3 n = normalize(vin.normal);
     float size = levelVoxelSize(level);
     vec3 centre = levelOrigin(level) +
             (vec3(texel - ivec3(0, 0, level * voxelResolution())) + 0.5) * size;
     float planeOffset = clamp(dot(vin.position - centre, n) / size, -1.0, 1.0);
-    float area = voxel.modes.y / max(projectedCosine, 0.577) / (size * size);
+    float pixelArea = rasterLevel >= 0 ? voxel.raster.y : voxel.raster.y / (size * size);
+    float area = pixelArea / max(projectedCosine, 0.577);
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);

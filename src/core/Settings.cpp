@@ -165,6 +165,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> int& { return s.voxel.levels; }),
         intSetting("voxel.multiplier", "voxelization raster resolution / voxel resolution", 1, 16,
                 [](Settings& s) -> int& { return s.voxel.multiplier; }),
+        boolSetting("voxel.raster_per_level",
+                "rasterize each cascade level over its own extent at voxel.resolution x "
+                "voxel.multiplier (0: one raster over the coarsest level, which gives the finest "
+                "of L levels 2^(L-1) / voxel.multiplier raster pixels per voxel edge)",
+                [](Settings& s) -> bool& { return s.voxel.rasterPerLevel; }),
         intSetting("voxel.inject_resolution", "light-view resolution for injection (0 = voxel.resolution)",
                 0, 4096, [](Settings& s) -> int& { return s.voxel.injectResolution; }),
         boolSetting("voxel.inject_fragment_mean",

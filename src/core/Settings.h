@@ -33,6 +33,8 @@ struct VoxelSettings {
     int resolution = 32;          // voxel.resolution: v, voxels per axis of every cascade level
     int levels = 3;               // voxel.cascades: l, nested levels, each twice the previous edge
     int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
+    bool rasterPerLevel = false;  // voxel.raster_per_level: each level rasterized over its
+                                  // own extent, not the finer levels through the coarsest
     int injectResolution = 0;     // voxel.inject_resolution: light-view pixels; 0 = v (thesis)
     bool injectFragmentMean = false;  // voxel.inject_fragment_mean: the thesis' mean over
                                       // fragments instead of flux / surface area

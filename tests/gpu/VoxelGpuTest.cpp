@@ -83,11 +83,16 @@ std::vector<glm::vec3> surfaceSamples(const scene::Scene& scene, float spacing) 
 
 class VoxelGpuTest : public GpuTest {};
 
-// At multiplier 8 every voxel a wall passes through is occupied (the bound: 99%), and
-// nothing is occupied farther than one voxel from a surface.
-TEST_F(VoxelGpuTest, CornellSurfacesCoverTheirVoxels) {
-    const scene::Scene scene = loadCornellBox();
-    VoxelFrame frame(scene, thesisAllocation(), {32, 32});
+struct SurfaceCoverage {
+    std::size_t expected = 0;   // voxels the scene's surfaces pass through (away from faces)
+    std::size_t covered = 0;    // of those, the occupied ones
+    int stray = 0;              // voxels occupied farther than one voxel from any surface
+    double share() const { return expected ? double(covered) / double(expected) : 0.0; }
+};
+
+// Which voxels of `level` (every level when -1) the scene's surfaces pass through, and how
+// many of them the frame occupied.
+SurfaceCoverage surfaceCoverage(const scene::Scene& scene, const VoxelFrame& frame, int onlyLevel) {
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
 
@@ -106,19 +111,16 @@ TEST_F(VoxelGpuTest, CornellSurfacesCoverTheirVoxels) {
                     nearSurface.insert({*level, voxel.x + dx, voxel.y + dy, voxel.z + dz});
         const glm::vec3 f = local - glm::floor(local);
         if (glm::any(glm::lessThan(f, glm::vec3(0.01f))) || glm::any(glm::greaterThan(f, glm::vec3(0.99f)))) continue;
+        if (onlyLevel >= 0 && *level != onlyLevel) continue;
         expected.insert({*level, voxel.x, voxel.y, voxel.z});
     }
-    ASSERT_GT(expected.size(), 100u);
-    std::size_t covered = 0;
+    SurfaceCoverage result;
+    result.expected = expected.size();
     for (const auto& [level, x, y, z] : expected) {
-        if (albedo[texelIndex(volume, {x, y, z}, level)].a > 0.0f) ++covered;
+        if (albedo[texelIndex(volume, {x, y, z}, level)].a > 0.0f) ++result.covered;
     }
-    EXPECT_GE(double(covered) / double(expected.size()), 0.99)
-            << covered << " of " << expected.size() << " voxels the walls pass through are occupied";
-
     // Outside the centre that a finer level covers (propagation fills it), every occupied
     // voxel must be next to a surface.
-    int stray = 0;
     const int v = volume.resolution();
     for (int level = 0; level < volume.levels(); ++level) {
         for (int z = 0; z < v; ++z)
@@ -128,11 +130,83 @@ TEST_F(VoxelGpuTest, CornellSurfacesCoverTheirVoxels) {
                     if (level > 0 && volume.finestLevelContaining(centre) != level) continue;
                     if (albedo[texelIndex(volume, {x, y, z}, level)].a > 0.0f &&
                             !nearSurface.count({level, x, y, z})) {
-                        ++stray;
+                        ++result.stray;
                     }
                 }
     }
-    EXPECT_EQ(stray, 0) << "voxels occupied away from any surface";
+    return result;
+}
+
+// At multiplier 8 every voxel a wall passes through is occupied (the bound: 99%), and
+// nothing is occupied farther than one voxel from a surface.
+TEST_F(VoxelGpuTest, CornellSurfacesCoverTheirVoxels) {
+    const scene::Scene scene = loadCornellBox();
+    VoxelFrame frame(scene, thesisAllocation(), {32, 32});
+    const SurfaceCoverage coverage = surfaceCoverage(scene, frame, -1);
+    ASSERT_GT(coverage.expected, 100u);
+    EXPECT_GE(coverage.share(), 0.99)
+            << coverage.covered << " of " << coverage.expected << " voxels the walls pass through are occupied";
+    EXPECT_EQ(coverage.stray, 0) << "voxels occupied away from any surface";
+}
+
+// Five levels at multiplier 8: one raster over the coarsest level has half a pixel per finest
+// voxel edge and leaves most of the finest level's voxels on a floor empty (the holes light
+// passes through); voxel.raster_per_level rasterizes each level over its own extent and
+// fills them all, and nothing off the floor.
+TEST_F(VoxelGpuTest, RasterPerLevelFillsTheFinestOfFiveLevels) {
+    scene::Scene scene;
+    scene.materials.emplace_back();
+    addPrimitive(scene, horizontalSquare(1.0f, 0.0f));
+    // The cascade centres on the camera: just above the floor, so the finest level holds it.
+    scene.cameras.push_back(lookAtCamera({0.013f, 0.004f, 0.007f}, {0.5f, 0.0f, 0.5f}, 60.0f));
+    addDefaults(scene);
+    Settings settings = thesisAllocation();
+    settings.voxel.levels = 5;
+    settings.voxel.resolution = 32;
+    settings.voxel.multiplier = 8;
+
+    struct FloorVoxels {
+        int expected = 0, covered = 0, stray = 0;
+    };
+    auto finestLevelFloor = [&](bool perLevel) {
+        settings.voxel.rasterPerLevel = perLevel;
+        VoxelFrame frame(scene, settings, {16, 16});
+        const voxel::CascadeVolume& volume = frame.manager().volume();
+        const auto albedo = readVolume(frame.manager().textures().albedo, volume);
+        const float layerPosition = (0.0f - volume.origin(0).y) / volume.voxelSize(0);
+        const int layer = int(std::floor(layerPosition));
+        // A floor lying on a voxel face may be stored in either neighbour.
+        const float inLayer = layerPosition - float(layer);
+        const int below = inLayer < 0.01f ? layer - 1 : layer;
+        const int above = inLayer > 0.99f ? layer + 1 : layer;
+        FloorVoxels result;
+        const int v = volume.resolution();
+        for (int z = 0; z < v; ++z)
+            for (int y = 0; y < v; ++y)
+                for (int x = 0; x < v; ++x) {
+                    const bool occupied = albedo[texelIndex(volume, {x, y, z}, 0)].a > 0.0f;
+                    if (y < below || y > above) {
+                        result.stray += occupied ? 1 : 0;
+                        continue;
+                    }
+                    if (y != layer) continue;
+                    ++result.expected;
+                    const bool neighbour = (below < layer &&
+                            albedo[texelIndex(volume, {x, below, z}, 0)].a > 0.0f) ||
+                            (above > layer && albedo[texelIndex(volume, {x, above, z}, 0)].a > 0.0f);
+                    result.covered += occupied || neighbour ? 1 : 0;
+                }
+        return result;
+    };
+    const FloorVoxels holes = finestLevelFloor(false);
+    const FloorVoxels filled = finestLevelFloor(true);
+
+    ASSERT_EQ(filled.expected, 32 * 32) << "the floor must cross the whole finest level";
+    EXPECT_LT(holes.covered, holes.expected / 2) << "one raster over the coarsest level: "
+            << holes.covered << " of " << holes.expected << " finest floor voxels occupied";
+    EXPECT_EQ(filled.covered, filled.expected) << "a raster per level: " << filled.covered
+            << " of " << filled.expected << " finest floor voxels occupied";
+    EXPECT_EQ(filled.stray, 0) << "finest voxels occupied off the floor";
 }
 
 // Under a directional light a plane has the same irradiance E = I cos(theta) everywhere.
