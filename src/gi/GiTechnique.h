@@ -62,6 +62,10 @@ struct GiOutputs {
     // Debug views: linear radiance to show instead of the final image (full resolution,
     // RGBA32F, alpha = coverage), or nullptr.
     const gl::Texture* debugImage = nullptr;
+    // The technique is accumulating its indirect light over frames after a change (of
+    // geometry, lights or visibility): each frame's light supersedes the last, so a temporal
+    // filter would only hold back light from before the change or noisier early frames.
+    bool converging = false;
 };
 
 class GiTechnique {

@@ -227,6 +227,9 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         gi = mGi->outputs();
     }
     if (gi.indirect && !gi.debugImage && mSettings.temporal.filter) {
+        // A technique still accumulating is its own temporal filter: the history starts
+        // from the light it settles on.
+        if (gi.converging) mTemporal.reset();
         gi.indirect = &mTemporal.execute({*gi.indirect, gi.size, mFrameUniforms, camera,
                                                   mSettings.temporal},
                 profiler);

@@ -194,6 +194,7 @@ AtlasGi::FramePlan AtlasGi::planFrame(const GiFrameInputs& in, const OccupancyVo
     c.occupancyVersion = visibility;
 
     FramePlan plan;
+    plan.inputsChanged = inputsChanged;
     plan.drawGBuffer = !c.gBufferValid;
     if (plan.drawGBuffer) {
         c.gBufferValid = true;
@@ -224,6 +225,9 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const FramePlan plan = planFrame(in, occupancy);
     writeUniforms(plan, in);
+    // Progressive sums gather until they reach atlas.target_samples; without progression
+    // every frame is computed afresh, and only a change of inputs breaks from the last one.
+    mConverging = mSettings.progressive ? plan.gather : plan.inputsChanged;
 
     if (plan.drawGBuffer) {
         mGBuffer.execute({in.scene, mGeometry, in.shadows, in.frameUniforms, mUniforms},
@@ -262,6 +266,7 @@ GiOutputs AtlasGi::outputs() const {
     out.indirect = &mResolve.indirect();
     out.size = mResolve.size();
     out.debugImage = mDebugView >= 0 ? &mDebugViewPass.image() : nullptr;
+    out.converging = mConverging;
     return out;
 }
 

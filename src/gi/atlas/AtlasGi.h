@@ -71,6 +71,7 @@ private:
         bool drawGBuffer = false;
         bool gather = false;         // gathers one sample set
         bool restart = false;        // ... into cleared sums
+        bool inputsChanged = false;  // geometry or lights changed since the last frame
         glm::vec2 rotation{0.0f};    // Cranley-Patterson offset of that set
         int view = -1;               // ATLAS_VIEW_* of the debug view shown, -1: none
     };
@@ -104,6 +105,7 @@ private:
     std::uint32_t mFrameIndex = 0;     // frames since configure: the set when not progressive
     bool mWarnedNoOccupancy = false;   // the missing occupancy is reported once per configure
     int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
+    bool mConverging = false;          // GiOutputs::converging of the last frame
 
     // Animated instances: the atlas vertices follow GpuScene's pose (AtlasPosePass).
     bool mFollowsPose = false;
