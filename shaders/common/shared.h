@@ -391,8 +391,9 @@ struct VoxelUniforms {                  // std140
                                         // y = 1 to jitter the cone ring per pixel, zw = unused
     vec4 raster;                        // voxelization: x = 1 to rasterize each level over
                                         // its own extent, 0 for one raster over the
-                                        // coarsest; y = the raster pixel's area, in voxel
-                                        // face areas per level, else in m^2; zw = unused
+                                        // coarsest; y = 1 / voxel.multiplier^2, a raster
+                                        // pixel's area in face areas of the voxels of the
+                                        // level rasterized; zw = unused
 };
 
 struct GpuShadow {                      // std430, one per light

@@ -36,8 +36,11 @@ void main() {
     vec3 centre = levelOrigin(level) +
             (vec3(texel - ivec3(0, 0, level * voxelResolution())) + 0.5) * size;
     float planeOffset = clamp(dot(vin.position - centre, n) / size, -1.0, 1.0);
-    float pixelArea = rasterLevel >= 0 ? voxel.raster.y : voxel.raster.y / (size * size);
-    float area = pixelArea / max(projectedCosine, 0.577);
+    // A raster pixel is 1/multiplier of the rasterized level's voxel edge (the coarsest
+    // level's with one raster); in this voxel's face areas:
+    int rasterized = rasterLevel >= 0 ? rasterLevel : voxelLevels() - 1;
+    float pixelEdge = levelVoxelSize(rasterized) / size;
+    float area = voxel.raster.y * pixelEdge * pixelEdge / max(projectedCosine, 0.577);
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);

@@ -119,11 +119,8 @@ void VoxelizationManager::writeUniforms() {
             : 0.0f;
     u.smoothing = glm::vec4(filterTexels, mSettings.jitter ? 1.0f : 0.0f, 0.0f, 0.0f);
     // One raster over the coarsest level, or one per level over its own extent
-    // (voxelize.geom): the raster pixel in metres, or in the level's voxel edges.
-    const int coarsest = mVolume.levels() - 1;
-    const float rasterPixel = mSettings.rasterPerLevel
-            ? 1.0f / float(mSettings.multiplier)
-            : mVolume.extent(coarsest) / float(mSettings.resolution * mSettings.multiplier);
+    // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
+    const float rasterPixel = 1.0f / float(mSettings.multiplier);
     u.raster = glm::vec4(mSettings.rasterPerLevel ? 1.0f : 0.0f, rasterPixel * rasterPixel, 0.0f,
             0.0f);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
