@@ -388,7 +388,10 @@ struct VoxelUniforms {                  // std140
                                         // propagation, w = 1 when cone tracing takes a
                                         // coarser level's unit normal for one plane
     vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
-                                        // y = 1 to jitter the cone ring per pixel, zw = unused
+                                        // y = 1 to jitter the cone ring per pixel, z = log2
+                                        // of the texel width of the light pyramid mip a cone
+                                        // reads, in cone diameters (voxel.footprint),
+                                        // w = unused
     vec4 raster;                        // voxelization: x = 1 to rasterize each level over
                                         // its own extent, 0 for one raster over the
                                         // coarsest; y = 1 / voxel.multiplier^2, a raster

@@ -38,6 +38,16 @@
 // cone's width. voxel.pyramid_mips caps that width: a texel's light is averaged across its
 // whole footprint, so a wide one straddling a wall shows a cone in one room the other room's
 // light (anisotropic texels hide what lies behind along the cone's axis, not beside it).
+// The pyramid mip is picked for voxel.footprint cone diameters (0.6 by default, the thesis
+// 1): a texel as wide as the cone, read trilinearly, averages a box one texel wide blurred by
+// a tent two texels wide, a kernel of twice the spread (standard deviation) of the cone's
+// disc, which carried bright patches (a lamp's spot, a sunlit strip) into the dim surfaces
+// around them and lost light in every closed room (closed white box: energy 0.93 at 1, 0.99
+// at 0.6). 0.5 would match the spreads and measured worse where a lamp makes a tiny hot
+// patch (the Cornell box); accuracy-analysis.md has the suite. The filtered voxels read while
+// the cone is narrower than two voxels keep their own width: there a narrower cone would
+// only shift the blend towards one voxel's light, which on the fixed plan's 9 cm voxels
+// paints the lamp's patch over the ceiling.
 // Reading one voxel instead made the cone a ray that sees a small bright patch (the ceiling
 // over a light) in full or not at all, which finer voxels alias ever more; and filtered
 // coverage spread each wall over two half-opaque voxel layers that let a quarter of a
@@ -152,13 +162,14 @@ vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
 
 // Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
 // around p on the coarsest level: the filtered voxels while the cone is narrower than they
-// are, then the pyramid mip whose texels match the diameter (blended over the first octave).
+// are, then the pyramid mip whose texels are voxel.footprint diameters wide (blended with the
+// filtered voxels over the first octave).
 vec3 coarsestLight(vec3 p, float diameter, vec3 dir) {
     int coarsest = voxelLevels() - 1;
     float spread = log2(diameter / levelVoxelSize(coarsest));
     vec4 wide = vec4(0.0);
     if (spread > 0.0) {
-        float mip = max(spread - 1.0, 0.0);
+        float mip = max(spread + voxel.smoothing.z - 1.0, 0.0);
         if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
         wide = pyramidAt((p - levelOrigin(coarsest)) / levelExtent(coarsest), mip, dir);
         if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;

@@ -214,6 +214,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 90.0f, [](Settings& s) -> float& { return s.voxel.coneAngle; }),
         floatSetting("voxel.step", "cone sample spacing in cone diameters", 0.1f, 2.0f,
                 [](Settings& s) -> float& { return s.voxel.stepFactor; }),
+        floatSetting("voxel.footprint",
+                "texel width of the light pyramid mip a cone reads, in cone diameters "
+                "(thesis: 1)",
+                0.25f, 2.0f, [](Settings& s) -> float& { return s.voxel.footprint; }),
         boolSetting("voxel.falloff", "apply the thesis' 1/(1+d^2) attenuation to cone samples",
                 [](Settings& s) -> bool& { return s.voxel.falloff; }),
         boolSetting("voxel.upsample_depth", "depth-aware upsampling of the traced indirect light",

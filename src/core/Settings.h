@@ -61,6 +61,10 @@ struct VoxelSettings {
                                   // 0 = the scene's shortest side / voxel.resolution
     float coneAngle = 45.0f;      // voxel.cone_angle: full aperture of each diffuse cone, degrees
     float stepFactor = 1.0f;      // voxel.step: sample spacing in cone diameters (thesis: 1)
+    float footprint = 0.6f;       // voxel.footprint: texel width of the light pyramid mip a
+                                  // cone reads, in cone diameters (thesis: 1; a trilinear
+                                  // read of texels one diameter wide averages over about
+                                  // twice the cone's footprint, cone_tracing.glsl)
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
     bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (4x4 dither)
