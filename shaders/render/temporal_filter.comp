@@ -3,7 +3,9 @@
 // is blended with this frame's value by an exponential moving average. History is rejected
 // where the previous frame saw another surface (view depth or normal too different) or
 // nothing; with gi.temporal_clamp it is also clamped to the range of this frame's 3x3
-// neighbourhood, so light that changed (a moving object) cannot linger as a trail.
+// neighbourhood, so light that changed (a moving object) cannot linger as a trail; the C++
+// side leaves the clamp out while a step of the technique's own (a voxel cascade's snap) fades
+// in (TemporalFilter.h).
 // A texel's first frames average uniformly (weight 1/n) until n reaches 1/blend, so newly
 // seen surfaces converge as fast as a plain mean would.
 #include "../common/bilinear_taps.glsl"

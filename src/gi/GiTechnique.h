@@ -66,6 +66,11 @@ struct GiOutputs {
     // geometry, lights or visibility): each frame's light supersedes the last, so a temporal
     // filter would only hold back light from before the change or noisier early frames.
     bool converging = false;
+    // The technique's light comes from resources placed anew this frame (the voxel cascade
+    // followed the camera to its next snap position): the image may step where the light did
+    // not change, so a temporal filter fades the step in rather than clipping its history to
+    // it.
+    bool resampled = false;
 };
 
 class GiTechnique {

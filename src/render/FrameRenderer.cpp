@@ -231,7 +231,7 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         // from the light it settles on.
         if (gi.converging) mTemporal.reset();
         gi.indirect = &mTemporal.execute({*gi.indirect, gi.size, mFrameUniforms, camera,
-                                                  mSettings.temporal},
+                                                  mSettings.temporal, gi.resampled},
                 profiler);
     } else {
         mTemporal.reset();

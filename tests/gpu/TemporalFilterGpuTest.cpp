@@ -14,6 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <optional>
+
 namespace gi::test {
 namespace {
 
@@ -28,17 +31,19 @@ Settings filterSettings(bool filter) {
     return settings;
 }
 
-// The indirect term of `frames` frames, the camera moving by `step` each frame, after
-// `settle` unrecorded frames at the start.
+// The indirect term of `frames` frames, the camera moving by `step` each frame from `start`
+// (the scene's camera if none), after `settle` unrecorded frames at the start.
 std::vector<bench::CoveredFrame> renderPath(const scene::Scene& scene, render::GiMode mode,
-        const Settings& settings, glm::vec3 step, int frames, int settle = 0) {
+        const Settings& settings, glm::vec3 step, int frames, int settle = 0,
+        std::optional<scene::CameraView> start = std::nullopt) {
     gl::ShaderLibrary shaders;
     render::FrameRenderer renderer;
     std::string error;
     EXPECT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
     EXPECT_TRUE(renderer.setMode(mode, error)) << error;
-    scene::CameraView camera = scene::cameraFromScene(scene.cameras[0],
-            float(kSize.x) / float(kSize.y), scene.bounds);
+    scene::CameraView camera = start ? *start
+                                     : scene::cameraFromScene(scene.cameras[0],
+                                               float(kSize.x) / float(kSize.y), scene.bounds);
     std::vector<bench::CoveredFrame> result;
     gl::GpuProfiler profiler;
     for (int i = 0; i < settle; ++i) {
@@ -91,6 +96,42 @@ TEST_F(TemporalFilterGpuTest, ReducesTheFrameToFrameChangeAlongAPath) {
         EXPECT_GT(plain, 0.0);
         EXPECT_LT(filtered, 0.9 * plain) << render::giModeName(mode);
     }
+}
+
+// The fixed plan's cascade around the Cornell box snaps to its coarsest voxel (2.99 m / 32):
+// the camera crossing x = 3.5 voxels moves every level by one, and the voxel light steps
+// (by about 14 %) where nothing changed. With the filter the step must fade in over frames,
+// as large in no frame as a third of the step, and be complete once the fade ends.
+TEST_F(TemporalFilterGpuTest, ACascadeSnapFadesInInsteadOfPopping) {
+    const scene::Scene scene = loadTestScene("assets/cornell_box/cornell_box.gltf");
+    const float snapX = 3.5f * 2.99f / 32.0f;   // render.plan=fixed's coarsest voxel
+    const glm::vec3 step(0.001f, 0.0f, 0.0f);
+    const int before = 4, frames = 22;          // the snap on frame 4 (0-based)
+    const glm::vec3 eye(snapX - (float(before) - 0.5f) * step.x, 0.273f, 0.8f);
+    const scene::CameraView start = scene::cameraLookAt(eye, eye - glm::vec3(0.0f, 0.0f, 0.8f),
+            glm::radians(39.3f), float(kSize.x) / float(kSize.y), scene.bounds);
+    Settings plain = filterSettings(false), filtered = filterSettings(true);
+    plain.plan = filtered.plan = PLAN_FIXED;
+    const auto plainPath = renderPath(scene, render::GiMode::Voxel, plain, step, frames, 11, start);
+    const auto filteredPath =
+            renderPath(scene, render::GiMode::Voxel, filtered, step, frames, 11, start);
+    std::vector<double> plainChange, filteredChange;
+    for (int i = 1; i < frames; ++i) {
+        plainChange.push_back(bench::relativeFrameChange(plainPath[i - 1], plainPath[i]));
+        filteredChange.push_back(bench::relativeFrameChange(filteredPath[i - 1], filteredPath[i]));
+    }
+    const double snap = plainChange[before - 1];
+    std::vector<double> others = plainChange;
+    others.erase(others.begin() + (before - 1));
+    std::nth_element(others.begin(), others.begin() + others.size() / 2, others.end());
+    const double largest = *std::max_element(filteredChange.begin(), filteredChange.end());
+    const double left = bench::relativeFrameChange(plainPath.back(), filteredPath.back());
+    std::printf("snap: plain %.4f (median of the other frames %.4f), filtered largest %.4f, "
+                "filtered vs plain at the end %.4f\n",
+            snap, others[others.size() / 2], largest, left);
+    ASSERT_GT(snap, 5.0 * others[others.size() / 2]) << "the path does not cross a snap";
+    EXPECT_LT(largest, snap / 3.0) << "the snap pops through the filter";
+    EXPECT_LT(left, 0.15 * snap) << "the filter still holds the light from before the snap";
 }
 
 } // namespace

@@ -160,6 +160,7 @@ void VoxelizationManager::place(const GiFrameInputs& in) {
         else if (mSettings.clampCentre) centre = glm::clamp(centre, mSceneBounds.min, mSceneBounds.max);
     }
     moved |= mVolume.placeAround(centre);
+    mPlacementMoved = moved;
     if (moved || mContentScene != &in.scene) {
         mContent = Content::None;
         mStaticCacheValid = false;
@@ -288,6 +289,7 @@ GiOutputs VoxelizationManager::outputs() const {
     out.size = mSettings.traceReuse ? mReuse.size() : mTrace.size();
     out.indirectSpecular = mSpecularCone ? &mTrace.specular() : nullptr;
     out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
+    out.resampled = mPlacementMoved;
     return out;
 }
 

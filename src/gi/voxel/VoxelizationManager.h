@@ -81,6 +81,7 @@ private:
     gl::Buffer mUniforms;
     float mFinestExtent = 0.0f;
     bool mShowDebug = false;
+    bool mPlacementMoved = false;   // this frame's placement differs from the last frame's
 
     StaticVoxelCache mStaticCache;
     bool mStaticCacheValid = false;   // mStaticCache holds this placement's static geometry
