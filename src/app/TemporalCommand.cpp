@@ -106,6 +106,9 @@ bool loadPaths(const Config& config, const TemporalForm& form,
 }
 
 std::vector<bench::TemporalConfiguration> configurations(const Settings& base, bool quick) {
+    // The plain rows switch the (default) filter off.
+    Settings plain = base;
+    plain.temporal.filter = false;
     Settings filtered = base;
     filtered.temporal.filter = true;
     Settings unclamped = filtered;
@@ -113,7 +116,7 @@ std::vector<bench::TemporalConfiguration> configurations(const Settings& base, b
     std::vector<bench::TemporalConfiguration> list;
     for (render::GiMode mode : {render::GiMode::Voxel, render::GiMode::Atlas}) {
         const std::string name = render::giModeName(mode);
-        list.push_back({name, mode, base});
+        list.push_back({name, mode, plain});
         list.push_back({name + " + filter", mode, filtered});
         if (!quick) list.push_back({name + " + filter, no clamp", mode, unclamped});
     }

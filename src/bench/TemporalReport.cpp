@@ -69,7 +69,8 @@ void writeDefinitions(std::ostringstream& md, const TemporalRunInfo& info) {
           "more (> 1) or less (< 1) the indirect term changes than the exactly computed direct "
           "light. Indirect light is smoother than direct light, so a stable method stays below "
           "1 (target on the Sponza walk: ≤ " << number(kRatioTarget, 1) << ").\n"
-       << "- **Filter**: `gi.temporal_filter=1` with `gi.temporal_blend=" << number(info.blend, 2)
+       << "- **Filter**: `gi.temporal_filter=1` (the default; the rows without it set 0) with "
+          "`gi.temporal_blend=" << number(info.blend, 2)
        << "` and history clipping (`gi.temporal_clamp=1`; *no clamp*: 0), in the renderer "
           "after the technique (render/TemporalFilter.h). On a frame where the voxel cascade "
           "snapped the light steps where nothing changed, so the clipping pauses while the "

@@ -110,8 +110,10 @@ struct VplSettings {
 
 // Temporal reprojection of the GI technique's indirect irradiance (render/TemporalFilter.h).
 struct TemporalSettings {
-    bool filter = false;          // gi.temporal_filter: blend each frame's indirect irradiance
-                                  // with the previous frames' reprojected into this view
+    bool filter = true;           // gi.temporal_filter: blend each frame's indirect irradiance
+                                  // with the previous frames' reprojected into this view (a
+                                  // single frame, or a still camera's converged one, is the
+                                  // technique's own image)
     float blend = 0.2f;           // gi.temporal_blend: weight of the new frame once a pixel's
                                   // history is long enough (1 = no history)
     bool clamp = true;            // gi.temporal_clamp: history clipped to the new frame's

@@ -74,6 +74,8 @@ Settings withCache(bool cache) {
     Settings settings = thesisAllocation();
     settings.specular = 0.0f;
     settings.voxel.cache = cache;
+    // Each frame is compared with a fresh renderer's: no history blended in.
+    settings.temporal.filter = false;
     return settings;
 }
 

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace gi::test {
 namespace {
@@ -101,20 +102,27 @@ TEST_F(TemporalFilterGpuTest, ReducesTheFrameToFrameChangeAlongAPath) {
 // The fixed plan's cascade around the Cornell box snaps to its coarsest voxel (2.99 m / 32):
 // the camera crossing x = 3.5 voxels moves every level by one, and the voxel light steps
 // (by about 14 %) where nothing changed. With the filter the step must fade in over frames,
-// as large in no frame as a third of the step, and be complete once the fade ends.
+// as large in no frame as a third of the step, and be gone once the fade ends: the filtered
+// image then differs from the plain one by no more than on the same path short of the snap
+// (where the filter only averages the motion) plus a tenth of the step.
 TEST_F(TemporalFilterGpuTest, ACascadeSnapFadesInInsteadOfPopping) {
     const scene::Scene scene = loadTestScene("assets/cornell_box/cornell_box.gltf");
     const float snapX = 3.5f * 2.99f / 32.0f;   // render.plan=fixed's coarsest voxel
     const glm::vec3 step(0.001f, 0.0f, 0.0f);
     const int before = 4, frames = 22;          // the snap on frame 4 (0-based)
-    const glm::vec3 eye(snapX - (float(before) - 0.5f) * step.x, 0.273f, 0.8f);
-    const scene::CameraView start = scene::cameraLookAt(eye, eye - glm::vec3(0.0f, 0.0f, 0.8f),
-            glm::radians(39.3f), float(kSize.x) / float(kSize.y), scene.bounds);
     Settings plain = filterSettings(false), filtered = filterSettings(true);
     plain.plan = filtered.plan = PLAN_FIXED;
-    const auto plainPath = renderPath(scene, render::GiMode::Voxel, plain, step, frames, 11, start);
-    const auto filteredPath =
-            renderPath(scene, render::GiMode::Voxel, filtered, step, frames, 11, start);
+    // Plain and filtered paths from `shift` metres left of the one that crosses the snap.
+    const auto paths = [&](float shift) {
+        const glm::vec3 eye(snapX - (float(before) - 0.5f) * step.x - shift, 0.273f, 0.8f);
+        const scene::CameraView start = scene::cameraLookAt(eye,
+                eye - glm::vec3(0.0f, 0.0f, 0.8f), glm::radians(39.3f),
+                float(kSize.x) / float(kSize.y), scene.bounds);
+        return std::pair{renderPath(scene, render::GiMode::Voxel, plain, step, frames, 11, start),
+                renderPath(scene, render::GiMode::Voxel, filtered, step, frames, 11, start)};
+    };
+    const auto [plainPath, filteredPath] = paths(0.0f);
+    const auto [plainShort, filteredShort] = paths(0.04f);   // ends 18 mm short of the snap
     std::vector<double> plainChange, filteredChange;
     for (int i = 1; i < frames; ++i) {
         plainChange.push_back(bench::relativeFrameChange(plainPath[i - 1], plainPath[i]));
@@ -126,12 +134,13 @@ TEST_F(TemporalFilterGpuTest, ACascadeSnapFadesInInsteadOfPopping) {
     std::nth_element(others.begin(), others.begin() + others.size() / 2, others.end());
     const double largest = *std::max_element(filteredChange.begin(), filteredChange.end());
     const double left = bench::relativeFrameChange(plainPath.back(), filteredPath.back());
-    std::printf("snap: plain %.4f (median of the other frames %.4f), filtered largest %.4f, "
-                "filtered vs plain at the end %.4f\n",
-            snap, others[others.size() / 2], largest, left);
+    const double motion = bench::relativeFrameChange(plainShort.back(), filteredShort.back());
+    std::printf("snap: plain %.4f (median of the other frames %.4f), filtered largest %.4f; "
+                "filtered vs plain at the end %.4f, on the path short of the snap %.4f\n",
+            snap, others[others.size() / 2], largest, left, motion);
     ASSERT_GT(snap, 5.0 * others[others.size() / 2]) << "the path does not cross a snap";
     EXPECT_LT(largest, snap / 3.0) << "the snap pops through the filter";
-    EXPECT_LT(left, 0.15 * snap) << "the filter still holds the light from before the snap";
+    EXPECT_LT(left, motion + 0.1 * snap) << "the filter still holds the light from before the snap";
 }
 
 } // namespace
