@@ -218,6 +218,7 @@ int runTemporalBench(const Config& config) {
     info.glRenderer = context->description();
     info.notes = notes;
     info.blend = base.temporal.blend;
+    info.blendMoving = base.temporal.blendMoving;
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<bench::TemporalPathResult> results;
     for (auto& loaded : paths) results.push_back(loaded->result);

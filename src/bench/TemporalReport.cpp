@@ -3,6 +3,7 @@
 #include "bench/BenchReport.h"
 #include "bench/TemporalImages.h"
 #include "core/ImageIO.h"
+#include "render/TemporalFilter.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -75,7 +76,13 @@ void writeDefinitions(std::ostringstream& md, const TemporalRunInfo& info) {
           "after the technique (render/TemporalFilter.h). On a frame where the voxel cascade "
           "snapped the light steps where nothing changed, so the clipping pauses while the "
           "exponential average fades the step in (until the history holds under 5 % of the "
-          "light from before it: 14 frames at blend 0.20).\n"
+          "light from before it: " << render::TemporalFilter::fadeFrames(info.blend)
+       << " frames at blend " << number(info.blend, 2) << "). On frames where animated "
+          "geometry moved the new frame weighs at least `gi.temporal_blend_moving="
+       << number(info.blendMoving, 2) << "`: the light around a moving object changes a "
+          "little every frame, inside the clip, and an average of weight "
+       << number(info.blend, 2) << " lags it by " << number(1.0 / info.blend - 1.0, 1)
+       << " frames.\n"
        << "- Every frame of a path is rendered in order by one renderer per configuration, as "
           "in the viewer: voxel caches, the atlas' progressive sums and the temporal filter's "
           "history persist.\n"

@@ -25,6 +25,7 @@ struct TemporalRunInfo {
     std::string date, glRenderer;
     double seconds = 0.0;
     float blend = 0.0f;        // gi.temporal_blend of the filtered configurations
+    float blendMoving = 0.0f;  // their gi.temporal_blend_moving
     std::vector<std::string> notes;   // e.g. Sponza left out and why
 };
 

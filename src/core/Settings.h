@@ -119,6 +119,10 @@ struct TemporalSettings {
     bool clamp = true;            // gi.temporal_clamp: history clipped to the new frame's
                                   // 3x3 mean +- one deviation, which cuts trails behind
                                   // moving objects
+    float blendMoving = 0.5f;     // gi.temporal_blend_moving: the new frame's least weight on
+                                  // frames whose geometry moved (an animation): light that
+                                  // changes a little each frame stays inside the clip, and an
+                                  // average of weight 0.2 lags it by four frames
     bool operator==(const TemporalSettings&) const = default;
 };
 

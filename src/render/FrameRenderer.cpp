@@ -230,8 +230,10 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         // A technique still accumulating is its own temporal filter: the history starts
         // from the light it settles on.
         if (gi.converging) mTemporal.reset();
+        const bool geometryMoved = mScene->geometryVersion() != mTemporalGeometry;
+        mTemporalGeometry = mScene->geometryVersion();
         gi.indirect = &mTemporal.execute({*gi.indirect, gi.size, mFrameUniforms, camera,
-                                                  mSettings.temporal, gi.resampled},
+                                                  mSettings.temporal, gi.resampled, geometryMoved},
                 profiler);
     } else {
         mTemporal.reset();

@@ -133,6 +133,7 @@ private:
     const scene::Scene* mPosedScene = nullptr;   // the last setPose's scene (init's before)
     ForwardPass mForward;
     TemporalFilter mTemporal;            // gi.temporal_filter
+    std::uint64_t mTemporalGeometry = 0; // GpuScene::geometryVersion() of its last frame
 };
 
 } // namespace gi::render

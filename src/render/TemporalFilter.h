@@ -2,7 +2,8 @@
 // shaders/render/temporal_filter.comp): this frame's E_ind blended with the filter's previous
 // output reprojected through the previous view, history rejected by view depth and normal
 // (and clamped to the new frame's neighbourhood with gi.temporal_clamp, except for the frames
-// that fade in a step of a resampled technique, GiOutputs::resampled). It works on
+// that fade in a step of a resampled technique, GiOutputs::resampled), weighing the new frame
+// at least gi.temporal_blend_moving while the geometry moves. It works on
 // GiOutputs::indirect, so every technique gets it; a still camera keeps the technique's image.
 // Inputs : GiOutputs::indirect (RGBA16F, rgb = E_ind W/m^2, a = view depth m), the frame UBO.
 // Outputs: a texture of the same size and meaning (RGBA32F), for the forward pass.
@@ -29,6 +30,7 @@ public:
         const scene::CameraView& camera;
         const TemporalSettings& settings;
         bool resampled = false;            // GiOutputs::resampled: fade a step in, no clip
+        bool geometryMoved = false;        // the scene was posed anew: settings.blendMoving
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
