@@ -136,7 +136,7 @@ float facingCone(ivec3 texel, vec3 dir) {
 
 // One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3) as seen along
 // dir; each face's read stays half a texel inside its slab so filtering never mixes faces.
-// The read is centred half a texel back along the cone (as in coarsestLight).
+// coarsestLight moves the read half a texel in front of the surface met.
 vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir) {
     float slab = float(max((voxelResolution() / 2) >> mip, 1));
     vec3 local = clamp(uvw * slab, vec3(0.5), vec3(slab - 0.5));
@@ -163,15 +163,20 @@ vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
 // Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
 // around p on the coarsest level: the filtered voxels while the cone is narrower than they
 // are, then the pyramid mip whose texels are voxel.footprint diameters wide (blended with the
-// filtered voxels over the first octave).
-vec3 coarsestLight(vec3 p, float diameter, vec3 dir) {
+// filtered voxels over the first octave). `front` points from the surface met to the side
+// the cone came from: the pyramid is read half a texel that way, so its trilinear kernel
+// (two texels wide) lies mostly in front of the surface. Centred on the surface, half the
+// kernel lay behind it and averaged in what the surface hides: the other side of a wall, the
+// shaded back of a pier, the dark outside of a lit room (accuracy-analysis.md).
+vec3 coarsestLight(vec3 p, float diameter, vec3 dir, vec3 front) {
     int coarsest = voxelLevels() - 1;
     float spread = log2(diameter / levelVoxelSize(coarsest));
     vec4 wide = vec4(0.0);
     if (spread > 0.0) {
         float mip = max(spread + voxel.smoothing.z - 1.0, 0.0);
         if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
-        wide = pyramidAt((p - levelOrigin(coarsest)) / levelExtent(coarsest), mip, dir);
+        vec3 read = p + front * (0.5 * exp2(mip + 1.0) * levelVoxelSize(coarsest));
+        wide = pyramidAt((read - levelOrigin(coarsest)) / levelExtent(coarsest), mip, dir);
         if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
     }
     if (anisotropicVoxels()) {
@@ -231,6 +236,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
             // first voxel it meets a surface in; the loop only fetches coverage, so the
             // costly reads below run once per surface met.
             bool found = false, crossed = false;
+            vec3 front = -dir;   // where no plane is met: back along the cone
             float hit = 0.0, coverage = 0.0, path = 0.0, entry = dist;
             while (steps < kMaxSteps && dist < maxDistance) {
                 ++steps;
@@ -285,6 +291,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                     float exitSide = voxelPlaneDistance(plane, centre, coarsestSize, exitPoint);
                     hit = path * entrySide / (entrySide - exitSide);
                     crossed = true;
+                    front = plane.xyz / length(plane.xyz);   // faces the cone (cosine < 0)
                 } else {
                     // Several surfaces: occluding along the whole path, light read halfway.
                     hit = 0.5 * path;
@@ -297,7 +304,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                     : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
             hit = clamp(hit, 0.0, path);
             reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest),
-                    dir);
+                    dir, front);
         } else {
             ++steps;
             float path = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *

@@ -59,11 +59,11 @@ def main():
         old = existing.get(key)
         if old:
             # A score that still passes keeps its threshold, or tightens it; one that fails
-            # it got worse.
+            # it got worse, and only that score takes the new margin.
             if any(m is not None and o is not None and m > o for m, o in zip(measured, old)):
                 looser.append(f"{key[0]} / {key[1]}: measured {measured}, thresholds {old}")
-            else:
-                new = tuple(n if o is None else min(n, o) for n, o in zip(new, old))
+            new = tuple(n if o is None or (m is not None and m > o) else min(n, o)
+                        for n, o, m in zip(new, old, measured))
         rows.append((key, new))
     if looser and not args.accept_worse:
         sys.exit("worse than the current thresholds (fix the regression, or "
