@@ -266,6 +266,7 @@ void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profil
         mQuarterTraced = reuse;
     } else {
         mTrace.execute(traceInputs, {traceSize}, profiler);
+        mQuarterTraced = false;
     }
     const gl::Texture& traced = mSettings.traceReuse ? mReuse.result() : mTrace.indirect();
     if (mSettings.filterRadius > 0) mFilter.execute({traced, mUniforms}, {traceSize}, profiler);
