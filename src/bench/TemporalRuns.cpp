@@ -1,6 +1,5 @@
 #include "bench/TemporalRuns.h"
 
-#include "gi/voxel/VoxelizationManager.h"
 #include "render/FrameRenderer.h"
 #include "scene/Animation.h"
 
@@ -9,7 +8,6 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
-#include <optional>
 
 namespace gi::bench {
 namespace {
@@ -41,10 +39,9 @@ scene::CameraView cameraAt(const TemporalPath& path, int frame) {
     return camera;
 }
 
-std::optional<glm::vec3> cascadeCentre(const render::FrameRenderer& renderer) {
-    const auto* voxel = dynamic_cast<const voxel::VoxelizationManager*>(renderer.technique());
-    if (!voxel) return std::nullopt;
-    return voxel->volume().center();
+// The technique's light came from resources placed anew this frame (a cascade's snap).
+bool resampled(const render::FrameRenderer& renderer) {
+    return renderer.technique() && renderer.technique()->outputs().resampled;
 }
 
 // What the moving-cube run rendered: see measureGhosting.
@@ -115,22 +112,19 @@ bool measureFlicker(const TemporalPath& path, const TemporalConfiguration& confi
         renderFrame(*renderer, path.start, path.size, render::OutputComponent::Indirect);
     }
     CoveredFrame previous;
-    std::optional<glm::vec3> previousCentre;
     double sum = 0.0;
     for (int i = 0; i < path.frames; ++i) {
         CoveredFrame frame = renderFrame(*renderer, cameraAt(path, i), path.size,
                 render::OutputComponent::Indirect);
-        const std::optional<glm::vec3> centre = cascadeCentre(*renderer);
         if (i > 0) {
             result.perFrame.push_back(relativeFrameChange(previous, frame));
             sum += result.perFrame.back();
-            result.cascadeMoved.push_back(centre && previousCentre && *centre != *previousCentre);
+            result.cascadeMoved.push_back(resampled(*renderer));
         }
         if (std::find(strip.begin(), strip.end(), i) != strip.end()) {
             result.strip.push_back(frame.image);
         }
         previous = std::move(frame);
-        previousCentre = centre;
     }
     result.indirectChange = result.perFrame.empty() ? 0.0 : sum / double(result.perFrame.size());
     result.directChange = meanFrameChange(direct);
