@@ -45,7 +45,8 @@ struct FlickerMeasurement {
     double indirectChange = 0.0;       // meanFrameChange of the indirect term
     double directChange = 0.0;         // the same of the exact direct term along the path
     std::vector<double> perFrame;      // relativeFrameChange of the indirect term into frame i
-    // Voxel mode: whether the cascade's centre moved (snapped) at frame i.
+    // Whether the technique placed its light anew at frame i (GiOutputs::resampled: the
+    // voxel cascade snapped to the camera).
     std::vector<bool> cascadeMoved;
     std::vector<core::Image> strip;    // the indirect term at stripFrames(path)
     double seconds = 0.0;
