@@ -40,9 +40,22 @@ def image(mode, output, settings, scene=SCENE, extra=()):
     return common.render(scene, options, hdr=True).image
 
 
+def erode(mask):
+    """The pixels of mask whose eight neighbours are in it too."""
+    inner = mask.copy()
+    padded = numpy.pad(mask, 1)
+    for dy in (0, 1, 2):
+        for dx in (0, 1, 2):
+            inner &= padded[dy:dy + mask.shape[0], dx:dx + mask.shape[1]]
+    return inner
+
+
 def metal_mask():
     """Pixels wholly covered by the metal block: the scene with the metal glowing (radiance
-    10) and no light, where only the block itself reaches 9."""
+    10) and no light, where only the block itself reaches 9 at the pixel's centre, less the
+    pixels next to one it does not cover. The path tracer's pixel integrates its whole area,
+    the rasterizer's samples its centre: a pixel on the block's outline holds some wall in the
+    one and none in the other, and the wall's diffuse light outweighs the metal's."""
     doc = json.load(open(SCENE))
     for material in doc["materials"]:
         if material["pbrMetallicRoughness"].get("metallicFactor", 1.0) > 0.0:
@@ -53,7 +66,7 @@ def metal_mask():
         path = os.path.join(tmp, "glow.gltf")
         json.dump(doc, open(path, "w"))
         glow = image("direct", "direct", LAMBERT, scene=path, extra=["--light", "none"])
-    return glow.min(axis=2) > 9.0
+    return erode(glow.min(axis=2) > 9.0)
 
 
 def signed_png(path, columns, scale):
@@ -136,7 +149,9 @@ def main():
             vox = numpy.clip(sign * specular["voxel", output], 0.0, None)[mask].sum()
             lines.append(f"| {output} | {part} | {ref:.1f} | {vox:.1f} | {vox / ref:.3f} |")
     lines += ["", "## The metal block", "",
-              f"Its glossy radiance over the {int(metal.sum())} pixels it wholly covers: a "
+              f"Its glossy radiance over the {int(metal.sum())} pixels inside its outline (the "
+              "path tracer's pixel integrates its area, the rasterizer's samples its centre, so "
+              "a pixel on the outline holds some wall in one and none in the other): a "
               "metal has no diffuse term, so this is specular light alone (direct: the point "
               "light's highlight; indirect: the specular cone against the path tracer's "
               "reflected paths).", "",
