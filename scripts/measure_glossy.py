@@ -191,8 +191,8 @@ def main():
 
     lines += ["", "## Images", "",
               "Specular components, reference | voxel | voxel - reference (grey = 0, white = "
-              "+s, black = -s, s given per row); then the glossy images themselves, "
-              "reference | voxel (gamma 2.2, one exposure).", ""]
+              "+s, black = -s, s given per row), the fixed plan; then the glossy images "
+              "themselves (gamma 2.2, one exposure).", ""]
     for output in ("direct", "indirect", "together"):
         ref, vox = specular["reference", output], specular["voxel", output]
         scale = float(numpy.percentile(numpy.abs(ref[mask]), 99.0))
@@ -201,8 +201,10 @@ def main():
         lines += [f"{output} (s = {scale:.3f} W/(m^2 sr)):", "", f"![{output}](images/{name})",
                   ""]
     tonemapped_png(os.path.join(common.IMAGES, "glossy_final.png"),
-                   [glossy["reference", "together"], glossy["voxel", "together"]])
-    lines += ["Glossy final images:", "", "![final](images/glossy_final.png)", ""]
+                   [glossy["reference", "together"], glossy["voxel", "together"],
+                    adaptive["glossy", "together"]])
+    lines += ["Glossy final images, reference | voxel, fixed plan | voxel, default plan:", "",
+              "![final](images/glossy_final.png)", ""]
     common.write_page("results-glossy.md", lines)
     common.progress("wrote docs/results-glossy.md")
 

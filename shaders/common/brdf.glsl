@@ -7,7 +7,8 @@
 // - the split-sum specular albedo E_spec = F0 A + B (Karis 2013), both tabulated by
 //   scripts/make_env_brdf_table.py for this G;
 // - the cone's direction, the lobe's dominant direction (Lagarde and de Rousiers 2014,
-//   "Moving Frostbite to PBR", 4.9.3), and its half-angle (specularConeTanHalfAngle).
+//   "Moving Frostbite to PBR", 4.9.3), its half-angle and the share of the lobe it stands
+//   for (specularCone).
 #ifndef GI_BRDF_GLSL
 #define GI_BRDF_GLSL
 
@@ -98,21 +99,31 @@ vec3 specularDominantDirection(GltfSurface s, vec3 n, vec3 v) {
     return normalize(mix(n, r, lerpFactor));
 }
 
-// The share of the specular lobe one cone stands for. GGX has long tails: the fraction of
-// its (projected) microfacet normals within theta_h of the normal is tan^2 / (alpha^2 +
-// tan^2), so the lobe's half-maximum (tan = 0.64 alpha) holds only 29% of them, and a
-// metal facing an open side of a room reflects most of its light from far off the mirror
-// direction. The cone takes the lobe's core, the half vectors within tan(theta_h) = alpha
-// (half of them), as wide as a reflected direction turns for them: 2 theta_h. The other
-// half, the tails, is spread over the hemisphere and takes the cosine-weighted mean
-// radiance the diffuse cones found, E_ind / pi.
-const float kSpecularConeShare = 0.5;
+// The specular lobe's core, which one cone stands for. GGX has long tails: the fraction of
+// its (projected) microfacet normals within theta_h of the normal is
+// tan^2 / (alpha^2 + tan^2), so the lobe's half-maximum (tan = 0.64 alpha) holds only 29% of
+// them. The cone takes the half vectors within tan(theta_h) = 3 alpha, 90% of them, as wide as
+// a reflected direction turns for them: 2 theta_h, at most 60 degrees (a rough lobe's cone
+// then holds fewer: 25% at roughness 1). What the cone leaves out is spread widely and takes
+// the cosine-weighted mean radiance the diffuse cones found, E_ind / pi. The tails are not
+// spread evenly over the hemisphere: they lie around the mirror direction, and a metal facing
+// an open side of a room sees that opening in them too, so the cone takes as much of the lobe
+// as its width allows (results-glossy.md measures the choice).
+struct SpecularCone {
+    float tanHalfAngle;
+    float share;   // of the lobe's microfacet normals
+};
 
-// Tangent of the specular cone's half-angle (see kSpecularConeShare).
-float specularConeTanHalfAngle(GltfSurface s) {
-    float share = kSpecularConeShare;
-    float halfVector = atan(s.alpha * sqrt(share / (1.0 - share)));
-    return tan(min(2.0 * halfVector, radians(60.0)));
+const float kSpecularConeTargetShare = 0.9;
+
+SpecularCone specularCone(GltfSurface s) {
+    float target = kSpecularConeTargetShare;
+    float halfVector = min(atan(s.alpha * sqrt(target / (1.0 - target))), radians(30.0));
+    float t = tan(halfVector);
+    SpecularCone cone;
+    cone.tanHalfAngle = tan(2.0 * halfVector);
+    cone.share = t * t / (s.alpha * s.alpha + t * t);
+    return cone;
 }
 
 #endif

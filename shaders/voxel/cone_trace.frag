@@ -58,8 +58,9 @@ void main() {
         vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
         GltfSurface s = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);
         vec3 dir = specularDominantDirection(s, n, v);
-        vec3 cone = traceCone(origin, dir, voxel.trace.y, specularConeTanHalfAngle(s));
-        vec3 incident = mix(irradiance / PI, cone, kSpecularConeShare);
+        SpecularCone lobe = specularCone(s);
+        vec3 cone = traceCone(origin, dir, voxel.trace.y, lobe.tanHalfAngle);
+        vec3 incident = mix(irradiance / PI, cone, lobe.share);
         outSpecular = vec4(incident * specularAlbedo(s, max(dot(n, v), 0.0)), viewDepth);
     }
 }

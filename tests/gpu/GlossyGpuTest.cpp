@@ -17,7 +17,7 @@
 namespace gi::test {
 namespace {
 
-constexpr int kSize = 48;
+constexpr int kSize = 96;
 
 scene::Scene glossyBox() { return loadTestScene("assets/scene_suite/cornell_glossy.gltf"); }
 
@@ -69,10 +69,12 @@ double sumOver(const core::Image& image, const std::vector<bool>& mask) {
 class GlossyGpuTest : public GpuTest {};
 
 // A metal has no diffuse term: its indirect light is the specular cone's (and the share of
-// the lobe taken from the diffuse cones). At 96x96 (scripts/measure_glossy.py) it holds 0.46
-// of the path tracer's: one cone and the hemisphere's mean miss how much of the GGX tails
-// reach the bright ceiling from the block's faces, which look out of the open box. Without
-// the cone the block's indirect light is 0.
+// the lobe taken from the diffuse cones). With the default plan it holds 0.95 of the path
+// tracer's here (1.00 over scripts/measure_glossy.py's inner pixels); 1.46 (1.54) when the
+// cone took half the lobe and the hemisphere's mean the other half: the block's faces look
+// out of the open box and their lobes' tails see the opening. At 48x48 the trace (24x24
+// after voxel.trace_scale) holds too few of the block's pixels to say (0.54 and 1.27).
+// Without the cone the block's indirect light is 0.
 TEST_F(GlossyGpuTest, SpecularConeLightsTheMetalBlockRoughlyAsThePathTracer) {
     const scene::Scene scene = glossyBox();
     const std::vector<bool> metal = metalPixels(scene);
@@ -80,7 +82,6 @@ TEST_F(GlossyGpuTest, SpecularConeLightsTheMetalBlockRoughlyAsThePathTracer) {
     for (bool m : metal) pixels += m ? 1 : 0;
     ASSERT_GT(pixels, 50);
     Settings settings;
-    settings.plan = PLAN_FIXED;
     settings.materialModel = MATERIAL_GLTF;
     ReferenceSettings referenceSettings;
     referenceSettings.spp = 256;
@@ -92,8 +93,8 @@ TEST_F(GlossyGpuTest, SpecularConeLightsTheMetalBlockRoughlyAsThePathTracer) {
     std::printf("metal block indirect light over %d pixels: voxel %.3f, reference %.3f, "
                 "ratio %.3f\n", pixels, voxel, reference, voxel / reference);
     ASSERT_GT(reference, 0.0);
-    EXPECT_GT(voxel / reference, 0.3);
-    EXPECT_LT(voxel / reference, 1.3);
+    EXPECT_GT(voxel / reference, 0.8);
+    EXPECT_LT(voxel / reference, 1.2);
 }
 
 TEST_F(GlossyGpuTest, NoSpecularIsLambertianInEveryModel) {
