@@ -96,11 +96,12 @@ bool loadSuiteScene(const Config& config, const bench::SuiteScene& suite, glm::i
             error);
 }
 
-// The settings under every configuration: the user's --set, Lambertian surfaces (the path
-// tracer's), and a reference with noise well under the errors it scores.
+// The settings under every configuration: the user's --set, surfaces the path tracer
+// models too (Lambertian, or glTF's BRDF with --set material.model=gltf: the Phong model's
+// highlight is the GPU's alone), and a reference with noise well under the errors it scores.
 Settings suiteSettings(const Config& config, bench::SuiteSize size) {
     Settings base = config.settings;
-    base.specular = 0.0f;
+    if (base.materialModel != MATERIAL_GLTF) base.specular = 0.0f;
     if (base.reference.spp == Settings{}.reference.spp) {
         base.reference.spp = size == bench::SuiteSize::Full ? 1024 : 256;
     }
