@@ -10,7 +10,7 @@ the unchanged shader. With --counts it also renders each shader's step counters 
 its light (the "counts" variant) and prints the mean per cone.
 
 Usage: /usr/bin/python3 scripts/bench_trace.py [--rounds N] [--frames N] [--size WxH]
-       [--set key=value ...] [--against DIR] [--counts]
+       [--set key=value ...] [--against DIR] [--counts] [--check]
   --against DIR: time the base folder (--base, default shaders/) against another shader
   folder (a change's after and before) instead of the profile variants.
 """
@@ -21,12 +21,19 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import interleaved as il  # noqa: E402
-import measure_common as common  # noqa: E402
+# Imported in main() after --check, which needs neither (nor their numpy): see load_modules.
+il = common = None
+SHADERS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "shaders")
+
+
+def load_modules():
+    global il, common
+    import interleaved as il  # noqa: E402
+    import measure_common as common  # noqa: E402
 
 TRACE = os.path.join("voxel", "cone_tracing.glsl")
 TRACE_MAIN = os.path.join("voxel", "cone_trace.frag")
-CONE_CALL = "traceCone(origin, n, maxDistance);"
+CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
 RING_LOOP = "for (int i = 0; i < 8; ++i) {"
 LIGHT_CALL = "reflected = coarsestLight("
 
@@ -42,7 +49,7 @@ PROFILE = {
         (LIGHT_CALL, "reflected = vec3(0.25) + 0.0 * (")]),
 }
 
-COUNTER_DECL = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance) {"
+COUNTER_DECL = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
 COUNTS = [
     (COUNTER_DECL, "int gSteps = 0, gFetches = 0, gHits = 0;\n" + COUNTER_DECL),
     ("coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0);",
@@ -54,14 +61,13 @@ COUNTS = [
     ("VoxelSample s = readLevel(p, level);", "VoxelSample s = readLevel(p, level); "
      "++gSteps; gFetches += 3;"),
     (TRACE_MAIN,
-     "outIndirect = vec4(coneIrradiance(origin, n, ringTurn, voxel.trace.y), viewDepth);",
-     "vec3 e = coneIrradiance(origin, n, ringTurn, voxel.trace.y); "
+     "outIndirect = vec4(irradiance, viewDepth);",
      "outIndirect = vec4(float(gSteps) / 9.0, float(gFetches) / 9.0, float(gHits) / 9.0, "
-     "viewDepth + 0.0 * e.x);"),
+     "viewDepth + 0.0 * irradiance.x);"),
     # The counters reach the image unscaled by the surface's albedo.
     (os.path.join("render", "forward.frag"),
-     "indirect = baseColor.rgb / PI * indirectIrradiance(viewDepth);",
-     "indirect = indirectIrradiance(viewDepth);"),
+     "indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth);",
+     "indirect = upsampledIndirect(indirectTexture, viewDepth);"),
 ]
 
 
@@ -97,19 +103,31 @@ def parse_size(text):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    common.add_bin_argument(parser)
+    parser.add_argument("--bin", help="voxatlas executable (default build/voxatlas)")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--frames", type=int, default=2)
-    parser.add_argument("--size", type=parse_size, default=(il.WIDTH, il.HEIGHT))
+    parser.add_argument("--size", type=parse_size, default=None,
+                        help="output size (default 1280x720)")
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE")
     parser.add_argument("--against", help="shader folder to time the base folder against")
     parser.add_argument("--against-bin", help="voxatlas that runs the --against shaders "
                         "(default --bin): a change in the passes' C++ as well")
-    parser.add_argument("--base", default=os.path.join(common.ROOT, "shaders"),
+    parser.add_argument("--base", default=SHADERS,
                         help="shader folder the variants start from (default shaders/)")
     parser.add_argument("--counts", action="store_true")
+    parser.add_argument("--check", action="store_true",
+                        help="only make every variant's shaders (each substitution must still "
+                        "match) and exit: ctest's lint.bench_trace_variants")
     args = parser.parse_args()
-    common.use_binary(args.bin)
+    if args.check:
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, (_, subs) in {**PROFILE, "counts": (None, COUNTS)}.items():
+                variant_dir(tmp, name, subs, args.base)
+        print(f"{len(PROFILE) + 1} variants of {args.base} made")
+        return
+    load_modules()
+    args.size = args.size or (il.WIDTH, il.HEIGHT)
+    common.use_binary(args.bin or common.BIN)
     settings = {"voxel.trace_scale": 1, "voxel.cache": 0}
     settings.update(kv.split("=", 1) for kv in args.set)
     with tempfile.TemporaryDirectory() as tmp:
