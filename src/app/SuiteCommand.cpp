@@ -6,10 +6,13 @@
 #include "bench/BenchRunner.h"
 #include "platform/GlContext.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace gi::app {
 namespace {
@@ -111,6 +114,15 @@ Settings suiteSettings(const Config& config, bench::SuiteSize size) {
 std::string commandText(const Config& config, bench::SuiteSize size) {
     std::string text = std::string("voxatlas bench --suite ") + bench::suiteSizeName(size);
     if (config.sceneGiven) text += " --scene " + config.scenePath;
+    // Each --set the run was given, with the value it took (the last of a key given twice).
+    std::vector<std::string> written;
+    for (const std::string& key : config.settingKeys) {
+        if (std::find(written.begin(), written.end(), key) != written.end()) continue;
+        written.push_back(key);
+        for (const SettingSpec& spec : settingSpecs()) {
+            if (spec.key == key) text += " --set " + key + "=" + spec.get(config.settings);
+        }
+    }
     return text;
 }
 
@@ -157,6 +169,7 @@ int runAccuracySuite(const Config& config) {
     std::fflush(stdout);
     info.size = bench::suiteSizeName(size);
     info.command = commandText(config, size);
+    info.glossy = base.glossyMaterials();
     info.date = localTime();
     info.glRenderer = context->description();
     info.loadBefore = loadAverage();

@@ -254,8 +254,12 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
     std::ostringstream out;
     out << "# Accuracy on the scene suite\n\n"
         << "Every scene of `assets/scene_suite/` and two lightings of Sponza, rendered at the "
-           "program's defaults (`material.specular=0`, so the images compare with the "
-           "Lambertian path tracer) in every GI mode and scored against the one-bounce path "
+           "program's defaults "
+        << (info.glossy ? "but with glossy materials (`material.model=gltf`: glTF's "
+                          "metallic-roughness BRDF on the GPU and in the path tracer)"
+                        : "(`material.specular=0`, so the images compare with the "
+                          "Lambertian path tracer)")
+        << " in every GI mode and scored against the one-bounce path "
            "tracer over the pixels it covers: the indirect component's relative RMSE and "
            "energy ratio, and the final image's error over that of the no-GI image.\n\n"
         << "Produced by `" << info.command << "` (" << info.size << " form) on " << info.date

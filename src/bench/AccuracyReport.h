@@ -56,6 +56,7 @@ struct SuiteRunInfo {
     std::string command;       // how to reproduce the page
     std::string date, glRenderer, loadBefore, loadAfter;
     double seconds = 0.0;
+    bool glossy = false;       // glTF's BRDF on the GPU and in the path tracer, else Lambert
     std::vector<std::string> notes;   // scenes left out and why
 };
 

@@ -40,8 +40,10 @@ TEST(SuiteCommand, OneSceneWritesPageTableAndPicture) {
         EXPECT_TRUE(std::isfinite(std::stod(table.field(row, "rel_rmse_indirect"))));
     }
     const std::string page = readTextFile(dir + "/results-accuracy.md");
-    EXPECT_NE(page.find("voxatlas bench --suite quick --scene closed_white_box"),
-            std::string::npos) << "the page says how it was made";
+    EXPECT_NE(page.find("voxatlas bench --suite quick --scene closed_white_box --set "
+                        "atlas.resolution=128 --set atlas.samples=16"),
+            std::string::npos) << "the page says how it was made, with the settings changed";
+    EXPECT_NE(page.find("--set vpl.count=64"), std::string::npos);
     EXPECT_NE(page.find("images/accuracy_closed_white_box.png"), std::string::npos);
     EXPECT_TRUE(fs::exists(dir + "/images/accuracy_closed_white_box.png"));
     fs::remove_all(dir);
