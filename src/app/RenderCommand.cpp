@@ -80,10 +80,8 @@ int runReference(const Config& config, const scene::Scene& scene, const scene::C
     std::string error;
     reference::ProgressBar bar("reference " + std::to_string(width) + "x" + std::to_string(height) +
             ", " + std::to_string(config.settings.reference.spp) + " spp");
-    ReferenceSettings settings = config.settings.reference;
-    settings.glossy = config.settings.glossyMaterials();
     const reference::ReferenceResult result = reference::renderReferenceCached(scene, camera, width,
-            height, settings, cache, status, error, bar.callback());
+            height, config.settings.pathTracer(), cache, status, error, bar.callback());
     bar.finish();
     if (result.final.empty()) return fail(1, error);
     if (!status.storeError.empty()) std::fprintf(stderr, "voxatlas render: %s\n", status.storeError.c_str());

@@ -140,11 +140,8 @@ reference::ReferenceResult BenchRunner::reference(const BenchScene& scene,
     reference::ProgressBar bar("reference " + scene.name + " " + std::to_string(scene.size.x) +
             "x" + std::to_string(scene.size.y) + ", " + std::to_string(mBase.reference.spp) +
             " spp");
-    // The path tracer with the materials the GPU renders: glossy ones when they are.
-    ReferenceSettings settings = mBase.reference;
-    settings.glossy = mBase.glossyMaterials();
     reference::ReferenceResult result = reference::renderReferenceCached(*scene.scene,
-            scene.camera, scene.size.x, scene.size.y, settings, cache, status, error,
+            scene.camera, scene.size.x, scene.size.y, mBase.pathTracer(), cache, status, error,
             bar.callback());
     bar.finish();
     if (!status.storeError.empty()) {

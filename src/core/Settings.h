@@ -132,8 +132,8 @@ struct ReferenceSettings {
     int bounces = 1;              // reference.bounces: indirect bounces (1 = direct + one bounce)
     int seed = 1;                 // reference.seed: seeds every pixel's random sequence
     int threads = 0;              // reference.threads: worker threads, 0 = all cores
-    // Not a key of its own: the material settings' glossyMaterials(), which the caller copies
-    // in (the reference cache keys glossy renders apart).
+    // Not a key of its own: the material settings' glossyMaterials(), filled in by
+    // Settings::pathTracer() (the reference cache keys glossy renders apart).
     bool glossy = false;          // glTF metallic-roughness BRDF instead of Lambert
     bool operator==(const ReferenceSettings&) const = default;
 };
@@ -180,6 +180,12 @@ struct Settings {
 
     // The glTF metallic-roughness BRDF is on (path tracer and GPU alike).
     bool glossyMaterials() const { return materialModel == MATERIAL_GLTF && specular > 0.0f; }
+    // The path tracer's settings, with the materials the GPU renders.
+    ReferenceSettings pathTracer() const {
+        ReferenceSettings settings = reference;
+        settings.glossy = glossyMaterials();
+        return settings;
+    }
 };
 
 struct SettingSpec {
