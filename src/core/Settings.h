@@ -35,7 +35,8 @@ struct VoxelSettings {
     int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
     bool rasterPerLevel = false;  // voxel.raster_per_level: each level rasterized over its
                                   // own extent, not the finer levels through the coarsest
-    int injectResolution = 0;     // voxel.inject_resolution: light-view pixels; 0 = v (thesis)
+    int injectResolution = 0;     // voxel.inject_resolution: light-view pixels; 0 = the
+                                  // adaptive plan's (2 per finest voxel), v in a fixed plan
     bool injectFragmentMean = false;  // voxel.inject_fragment_mean: the thesis' mean over
                                       // fragments instead of flux / surface area
     float traceScale = 0.5f;      // voxel.trace_scale: cone-trace resolution / output resolution

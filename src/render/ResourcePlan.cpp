@@ -19,6 +19,10 @@ namespace {
 constexpr float kCompactSlack = 1.25f;
 // Share of the atlas' texels covered by charts, gutters and packing waste left aside.
 constexpr double kAtlasFill = 0.5;
+// Light-view pixels per finest voxel edge for injection, and the most an adaptive plan asks
+// for (a light's views are rasterized at this size whenever its light changes).
+constexpr float kInjectPixelsPerVoxel = 2.0f;
+constexpr int kMaxAdaptiveInject = 1024;
 
 std::size_t sum(const std::vector<gl::MemoryItem>& items) {
     std::size_t total = 0;
@@ -84,6 +88,18 @@ VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
     plan.levels = std::clamp(levels, 1, maxLevels);
     plan.finestExtent = coarsest / float(1 << (plan.levels - 1));
     return plan;
+}
+
+// Light-view pixels for injection: a fragment lands in one finest voxel, so a light pixel
+// larger than the finest voxel leaves voxels between fragments dark (rows of lit and unlit
+// voxels across a sunlit floor). Two pixels per finest voxel across the longest side.
+int adaptiveInjectResolution(const scene::Aabb& bounds, const VoxelPlan& plan,
+        const VoxelSettings& s) {
+    if (s.injectResolution > 0) return s.injectResolution;
+    const glm::vec3 size = bounds.size();
+    const float longest = std::max(size.x, std::max(size.y, size.z));
+    const float pixels = kInjectPixelsPerVoxel * longest / std::max(plan.voxelSize(0), 1e-9f);
+    return std::clamp(int(std::ceil(std::min(pixels, 1e6f))), plan.resolution, kMaxAdaptiveInject);
 }
 
 } // namespace
@@ -171,6 +187,8 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
     plan.surfaceArea = sceneSurfaceArea(scene);
     if (settings.plan == PLAN_ADAPTIVE) {
         plan.voxel = adaptiveVoxelPlan(scene.bounds, settings.voxel);
+        plan.voxel.injectResolution =
+                adaptiveInjectResolution(scene.bounds, plan.voxel, settings.voxel);
         const double texel = settings.atlas.texelSize > 0.0f
                 ? double(settings.atlas.texelSize)
                 : 0.5 * double(plan.voxel.voxelSize(0));
@@ -213,6 +231,7 @@ Settings applyPlan(const Settings& settings, const ResourcePlan& plan) {
     s.voxel.extent = plan.voxel.finestExtent;
     s.voxel.sceneCentred = plan.voxel.sceneCentred;
     s.voxel.clampCentre = plan.voxel.clampCentre;
+    s.voxel.injectResolution = plan.voxel.injectResolution;
     s.atlas.resolution = plan.atlasResolution;
     return s;
 }
@@ -248,6 +267,11 @@ std::string describePlan(const ResourcePlan& plan, const std::string& why) {
             double(v.voxelSize(0)), double(v.finestExtent * float(1 << (v.levels - 1))),
             mebibytes(plan.voxelBytes()));
     text += line;
+    if (v.injectResolution > 0) {
+        std::snprintf(line, sizeof line, "           light injection through %d^2-pixel light views\n",
+                v.injectResolution);
+        text += line;
+    }
     std::snprintf(line, sizeof line,
             "  atlas    %d^2 texels over %.4g m^2 of surface (about %.3g m per texel): %.2f MiB\n",
             plan.atlasResolution, plan.surfaceArea, plan.atlasTexelSize, mebibytes(plan.atlasBytes()));

@@ -10,6 +10,9 @@
 //     point of it: levels past that would hold only empty space and are not allocated. The
 //     finest level then shrinks until the coarsest just reaches (finer voxels for the same
 //     memory), so voxel.size is an upper bound;
+//   - light injection: voxel.inject_resolution, or two light-view pixels per finest voxel
+//     across the scene's longest side (the thesis' v pixels over the coarsest level leave
+//     most finest voxels without a fragment: Sponza's are 0.32 m, its light pixels 1.2 m);
 //   - atlas: atlas.texel_size (default half the finest voxel) over the scene's surface area,
 //     with room for charts, gutters and packing;
 //   - lights whose light cannot reach the scene get no shadow map and no injection: zero
@@ -35,6 +38,7 @@ struct VoxelPlan {
     float finestExtent = 0.0f;   // edge of level 0, m
     bool sceneCentred = false;
     bool clampCentre = false;
+    int injectResolution = 0;    // light-view pixels per side
     [[nodiscard]] float voxelSize(int level) const {
         return finestExtent * float(1 << level) / float(resolution);
     }

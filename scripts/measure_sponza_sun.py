@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""Voxel GI's indirect energy in Sponza under a sun at three elevations, against the path
+tracer, for the light injection and voxel resolutions that decide it: the default plan (two
+light pixels per finest voxel), the thesis' injection of voxel.resolution pixels over the
+scene, and 64^3 and 128^3 levels (the plan keeps the coarsest level at twice the scene's
+longest side, so these halve and quarter every level's voxel). The camera is the suite's
+sponza_sun view (assets/scene_suite/README.md); the indirect term at 160x90,
+reference.spp=512 (cached on disk), material.specular=0.
+
+Usage: /usr/bin/python3 scripts/measure_sponza_sun.py [--bin build/voxatlas] [--sponza PATH]
+       [--picture docs/images/sponza_sun_voxel_size.png]
+Prints a markdown table (energy and relative RMSE of every configuration at every
+elevation) and writes the picture: one row per sun, left to right the path tracer, the
+default plan, 64^3 and 128^3, each row at the exposure that shows the path tracer's mean at
+0.2.
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import measure_common as common  # noqa: E402
+
+CAMERA = "-1.2,1.7,-8,0.8,3.5,10,60"
+SIZE = (160, 90)
+SUNS = [("0.2,-1,0.3", "the suite's sun (elevation 70 degrees)"),
+        ("0.1,-1,0.1", "elevation 82 degrees"),
+        ("0,-1,0", "straight down")]
+BASE = {"render.plan": "adaptive", "material.specular": 0}
+CONFIGS = [("default plan", {}),
+           ("injection at voxel.resolution (the thesis)", {"voxel.inject_resolution": 32}),
+           ("voxel.resolution=64", {"voxel.resolution": 64}),
+           ("voxel.resolution=128", {"voxel.resolution": 128})]
+PICTURED = [0, 2, 3]
+
+
+def indirect(sponza, mode, sun, settings):
+    extra = ["--camera", CAMERA, "--light", "none", "--light", f"dir:{sun}:1,1,1:4"]
+    return common.render_indirect(sponza, mode, {**BASE, **settings}, SIZE, extra=extra).image
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    common.add_bin_argument(parser)
+    common.add_sponza_argument(parser)
+    parser.add_argument("--picture", default=os.path.join(common.IMAGES, "sponza_sun_voxel_size.png"))
+    args = parser.parse_args()
+    common.use_binary(args.bin)
+    if not os.path.exists(args.sponza):
+        sys.exit(f"Sponza not found at {args.sponza}: pass --sponza PATH or set VOXATLAS_SPONZA")
+    import numpy
+    header = "| configuration | " + " | ".join(f"sun {d} ({why})" for d, why in SUNS) + " |"
+    rows = {name: [] for name, _ in CONFIGS}
+    strips = []
+    for sun, _ in SUNS:
+        ref = indirect(args.sponza, "reference", sun, {"reference.spp": 512})
+        mask = common.reference_mask(ref)
+        exposure = 0.2 / max(float(ref[mask].mean()), 1e-12)
+        strip = [ref]
+        for i, (name, settings) in enumerate(CONFIGS):
+            image = indirect(args.sponza, "voxel", sun, settings)
+            rmse, energy = common.errors(image, ref, mask)
+            rows[name].append(f"{energy:.3f} / {rmse:.3f}")
+            if i in PICTURED:
+                strip.append(image)
+        strips.append(numpy.concatenate([im * exposure for im in strip], axis=1))
+    print("energy / relative RMSE of the indirect term against the path tracer\n")
+    print(header)
+    print("|---" * (len(SUNS) + 1) + "|")
+    for name, _ in CONFIGS:
+        print(f"| {name} | " + " | ".join(rows[name]) + " |")
+    rgb = numpy.concatenate(strips, axis=0) ** (1.0 / 2.2)
+    common.write_png(args.picture, rgb, scale=2)
+    print(f"\nwrote {args.picture}")
+
+
+if __name__ == "__main__":
+    main()
