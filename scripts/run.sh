@@ -9,4 +9,4 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" >/dev/null
 cmake --build build -j "$(nproc)" --target voxatlas
-exec ./build/voxatlas view --mode voxel "$@"
+exec ./build/voxatlas view "$@"   # the viewer opens in voxel GI mode unless --mode is given

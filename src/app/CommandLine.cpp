@@ -115,6 +115,7 @@ bool applyMode(Config& config, const std::string&, const std::string& v, std::st
         return false;
     }
     config.mode = *mode;
+    config.modeGiven = true;
     return true;
 }
 
@@ -331,7 +332,10 @@ bool checkRequired(Config& config, std::string& error) {
     }
     if (config.scenePath.empty()) config.scenePath = defaultScenePath();
     if (command == Command::View) {
-        // The viewer's look; the headless fallback (a render) inherits it from here.
+        // The viewer's look; the headless fallback (a render) inherits it from here. It opens
+        // with global illumination: a viewer of a GI program that starts on direct light
+        // shows a new user none of what it is for.
+        if (!config.modeGiven) config.mode = render::GiMode::Voxel;
         if (!config.exposureGiven) config.toneMapping.autoExposure = true;
         if (!config.toneCurveGiven) config.toneMapping.curve = core::ToneCurve::Filmic;
     }

@@ -48,7 +48,8 @@ struct Config {
     std::string outPath;                     // render: PNG
     std::string hdrPath;                     // render, view: .exr or .pfm
     std::string timingsPath;                 // render: JSON
-    render::GiMode mode = render::GiMode::Direct;
+    render::GiMode mode = render::GiMode::Direct;   // view: voxel unless --mode is given
+    bool modeGiven = false;
     render::OutputComponent output = render::OutputComponent::Final;
     int width = 0, height = 0;               // 0 = the command's default
     int cameraIndex = 0;

@@ -56,8 +56,9 @@ TEST_F(ViewerTest, ScreenshotMatchesHeadlessRender) {
     const std::string dir = makeTempDir("view-vs-render");
     // The viewer's own look is auto exposure and a filmic curve; at exposure 0 and no curve
     // it shows the linear image `render` writes by default.
-    const ProcessResult view = runView(dir, {kCornell, "--frames", "2", "--screenshot", "v.png",
-            "--width", "160", "--height", "120", "--exposure", "0", "--tonemap", "none"});
+    const ProcessResult view = runView(dir, {kCornell, "--mode", "direct", "--frames", "2",
+            "--screenshot", "v.png", "--width", "160", "--height", "120", "--exposure", "0",
+            "--tonemap", "none"});
     ASSERT_EQ(view.exitCode, 0) << view.err;
     const ProcessResult render = runVoxatlas({"render", kCornell, "--out", dir + "/r.png",
             "--width", "160", "--height", "120"}, kTimeoutSeconds);
@@ -87,7 +88,9 @@ TEST_F(ViewerTest, InjectedHotkeysRun) {
 // geometry), which shows another picture; Home comes back to the exact start view.
 TEST_F(ViewerTest, CameraKeysCycleAndHomeReturnsToTheStart) {
     const std::string dir = makeTempDir("view-cameras");
-    const std::vector<std::string> size = {"--width", "64", "--height", "64", "--exposure", "0"};
+    // Direct light: two runs of voxel GI differ in the last bits (voxelization order).
+    const std::vector<std::string> size = {"--width", "64", "--height", "64", "--exposure", "0",
+            "--mode", "direct"};
     auto run = [&](const std::string& keys, const std::string& png) {
         std::vector<std::string> args = {kCornell, "--frames", "3", "--screenshot", png};
         args.insert(args.end(), size.begin(), size.end());
@@ -112,10 +115,11 @@ TEST_F(ViewerTest, CameraKeysCycleAndHomeReturnsToTheStart) {
 TEST_F(ViewerTest, ModeKeysSwitchOrExplain) {
     const std::string dir = makeTempDir("view-modes");
     // Fixed exposure: auto exposure would bring both frames to the same brightness.
-    const ProcessResult direct = runView(dir, {kCornell, "--frames", "2", "--width", "64",
-            "--height", "64", "--screenshot", "direct.png", "--exposure", "0", "--tonemap", "none"});
+    const ProcessResult direct = runView(dir, {kCornell, "--mode", "direct", "--frames", "2",
+            "--width", "64", "--height", "64", "--screenshot", "direct.png", "--exposure", "0",
+            "--tonemap", "none"});
     ASSERT_EQ(direct.exitCode, 0) << direct.err;
-    const ProcessResult r = runView(dir, {kCornell, "--frames", "3", "--width", "64",
+    const ProcessResult r = runView(dir, {kCornell, "--mode", "direct", "--frames", "3", "--width", "64",
             "--height", "64", "--keys", "0:2,1:3", "--screenshot", "s.png", "--set",
             "atlas.resolution=256", "--set", "atlas.cache=0", "--exposure", "0", "--tonemap",
             "none"});
@@ -234,6 +238,24 @@ TEST(ViewerNoDisplay, FallsBackToHeadlessScreenshot) {
     ASSERT_TRUE(core::readPng(dir + "/x.png", image, error)) << error;
     EXPECT_EQ(image.width, 96);
     EXPECT_EQ(image.height, 72);
+    fs::remove_all(dir);
+}
+
+// The viewer opens with global illumination (voxel GI) unless --mode says otherwise.
+TEST(ViewerNoDisplay, OpensInVoxelModeUnlessAskedOtherwise) {
+    const std::string dir = makeTempDir("view-no-display-mode");
+    for (const char* mode : {"", "direct"}) {
+        std::vector<std::string> args = {"/usr/bin/env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY",
+                "-C", dir, VOXATLAS_EXECUTABLE, "view", kCornell, "--width", "32", "--height", "32"};
+        if (*mode) args.insert(args.end(), {"--mode", mode});
+        const ProcessResult r = runProcess(args, kTimeoutSeconds);
+        if (r.exitCode == 1 && r.err.find("no OpenGL 4.5 context") != std::string::npos) {
+            GTEST_SKIP() << "no headless OpenGL context: " << r.err;
+        }
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const std::string expected = std::string("(32x32, ") + (*mode ? mode : "voxel") + ",";
+        EXPECT_NE(r.err.find(expected), std::string::npos) << "expected " << expected << ": " << r.err;
+    }
     fs::remove_all(dir);
 }
 

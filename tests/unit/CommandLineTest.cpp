@@ -139,6 +139,16 @@ TEST(CommandLine, ParsesViewMotionAndDrops) {
     EXPECT_EQ(config->hdrPath, "v.pfm");
 }
 
+TEST(CommandLine, ViewOpensInVoxelModeUnlessAsked) {
+    std::string error;
+    const auto view = parse({"view"}, error);
+    ASSERT_TRUE(view) << error;
+    EXPECT_EQ(view->mode, render::GiMode::Voxel);
+    const auto direct = parse({"view", "--mode", "direct"}, error);
+    ASSERT_TRUE(direct) << error;
+    EXPECT_EQ(direct->mode, render::GiMode::Direct);
+}
+
 TEST(CommandLine, ViewStartsInTheModeAsked) {
     std::string error;
     const auto config = parse({"view", "--mode", "voxel"}, error);
