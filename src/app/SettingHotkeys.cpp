@@ -38,7 +38,8 @@ const std::vector<SettingHotkey>& settingHotkeys() {
                 [](Settings& s, float) {
                     s.voxel.multiplier = s.voxel.multiplier >= 16 ? 1 : s.voxel.multiplier * 2;
                 }},
-        {"F7", "injection resolution v, 2v, 4v, 8v", "voxel.inject_resolution",
+        {"F7", "injection resolution: the plan's (v on the fixed plan), 2v, 4v, 8v",
+                "voxel.inject_resolution",
                 [](Settings& s, float) {
                     const int v = s.voxel.resolution;
                     const int current = s.voxel.injectResolution > 0 ? s.voxel.injectResolution : v;
