@@ -70,8 +70,7 @@ TEST_F(ViewerBudget, MovingFramesHoldTheBudget) {
     const double budget = std::round(full.medianMs / 2.0);
 
     std::vector<std::string> moving = {kViewerCornell, "--mode", "direct", "--frames", "24",
-            "--move",
-            "0.005,0,0", "--move-frames", "20", "--set",
+            "--move", "0.005,0,0", "--move-frames", "20", "--set",
             "view.frame_budget_ms=" + std::to_string(int(budget))};
     moving.insert(moving.end(), size.begin(), size.end());
     const ProcessResult r = runView(dir, moving);
