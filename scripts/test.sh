@@ -12,6 +12,6 @@ rm -f "$results"
 status=0
 ctest --output-on-failure --timeout 900 -j 2 --output-junit "$results" "$@" || status=$?
 if [ -f "$results" ]; then
-    python3 ../scripts/skip_summary.py "$results" || true
+    python3 ../scripts/test_summary.py "$results" || true
 fi
 exit "$status"
