@@ -22,12 +22,29 @@ const float kOnePlaneNormal = 0.9;
 // outside the voxel.
 const float kPlaneTolerance = 0.1;
 
+// Level-0 voxels whose mean normal is at least this long are met at their mean plane by the
+// visibility marches (voxelMetAtPlane): one flat surface (length about 1), or surfaces meeting
+// at an edge or a corner (two at right angles in equal parts: 0.71; three: 0.58), where the
+// mean plane cuts the edge off between its faces. Shorter mean normals come from surfaces
+// facing apart, such as both faces of a slab thinner than a voxel.
+const float kMeanPlaneNormal = 0.5;
+
 // Whether the voxel's normal texel on `level` says it holds one plane. `coarserLevels` takes
 // a coarser level's unit-length normal for one plane as well, which it is not where surfaces
 // meet (above); only cone tracing's coarsest-level walk asks for that, under
 // voxel.coarse_planes.
 bool voxelHoldsOnePlane(vec4 plane, int level, bool coarserLevels) {
     return (level == 0 || coarserLevels) && length(plane.xyz) >= kOnePlaneNormal;
+}
+
+// Whether a visibility march meets the voxel only where the segment crosses its mean plane
+// (else anywhere it crosses the voxel). A segment passing an edge voxel outside the edge, as
+// rays from a wall past a block's edge do, then passes: blocking it by coverage made every
+// block look a voxel larger, and VPL and converged atlas GI lost light beside every block and
+// in every corner (accuracy-analysis.md). Coarser levels' planes are averages of their
+// children (above), so their voxels block wherever crossed.
+bool voxelMetAtPlane(vec4 plane, int level) {
+    return level == 0 && length(plane.xyz) >= kMeanPlaneNormal;
 }
 
 // Signed distance of p from the plane of the voxel (centre, edge size), in voxel sizes,

@@ -2,12 +2,13 @@
 // gather's senders (SEEDS.md section 2, "future work: visibility") and gi/vpl's VPLs. The
 // cascade layout is voxel_cascade.glsl's, coverage in the albedo texture's alpha, each voxel's
 // surface plane in the normal texture. The segment is walked voxel by voxel through the finest
-// level containing each point, each voxel once. An occupied voxel whose surface is one plane
-// (voxel_plane.glsl) blocks the segment only where the segment crosses that plane inside the
-// voxel, weighted by its coverage: a ray that grazes a wall within a voxel of it, as rays
-// between neighbouring receivers near a corner do, passes. A voxel of several surfaces (edges,
-// corners) and any voxel of a coarser level, whose plane is an average of surfaces rather than
-// one, block by their coverage alone. Both ends first leave their own surface by one voxel
+// level containing each point, each voxel once. An occupied level-0 voxel of one plane, or of
+// surfaces meeting at an edge or a corner (voxelMetAtPlane in voxel_plane.glsl), blocks the
+// segment only where the segment crosses its mean plane inside the voxel, weighted by its
+// coverage: a ray that grazes a wall within a voxel of it, as rays between neighbouring
+// receivers near a corner do, passes, and so does a ray passing a block's edge outside it.
+// Voxels of surfaces facing apart (both faces of a slab thinner than a voxel) and any voxel of
+// a coarser level, whose plane is an average of its children, block by their coverage alone. Both ends first leave their own surface by one voxel
 // along its normal, and the voxels they then start in do not block, so a surface never
 // occludes itself (the segment shrunk at both ends, epsilon exits against self-hits). Parts of
 // the segment outside the cascade count as empty.
@@ -64,7 +65,7 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
         bool endVoxel = i == 0 || exit >= len;
         if (coverage > 0.0 && !endVoxel) {
             vec4 plane = texelFetch(voxelPlane, texel, 0);
-            bool blocks = !voxelHoldsOnePlane(plane, level, false) ||
+            bool blocks = !voxelMetAtPlane(plane, level) ||
                     segmentCrossesVoxelPlane(plane, lo + 0.5 * size, size, p, a + dir * exit,
                             kPlaneTolerance);
             if (blocks) transmittance *= 1.0 - coverage;

@@ -67,10 +67,11 @@ vec3 cosineDirection(vec3 n, vec2 u) {
 }
 
 // Where, between p and b inside the voxel, the ray meets the voxel's surface: its plane's
-// crossing for a one-plane voxel, else the middle of the ray's way through the voxel.
-vec3 hitPoint(vec4 plane, bool onePlane, vec3 centre, float size, vec3 p, vec3 b) {
+// crossing for a voxel met at its mean plane (voxelMetAtPlane), else the middle of the ray's way
+// through the voxel.
+vec3 hitPoint(vec4 plane, bool atPlane, vec3 centre, float size, vec3 p, vec3 b) {
     vec3 mid = 0.5 * (p + b);
-    if (!onePlane) return mid;
+    if (!atPlane) return mid;
     vec3 n = plane.xyz / length(plane.xyz);
     float approach = dot(n, b - p);
     if (abs(approach) < 1e-6 * size) return mid;
@@ -111,12 +112,12 @@ bool firstSurface(vec3 origin, vec3 originNormal, vec3 dir, float u, out Surface
             vec4 plane = texelFetch(voxelPlane, texel, 0);
             vec3 centre = lo + 0.5 * size;
             vec3 b = a + dir * exit;
-            bool onePlane = voxelHoldsOnePlane(plane, level, false);
-            if (!onePlane || segmentCrossesVoxelPlane(plane, centre, size, p, b, kPlaneTolerance)) {
+            bool atPlane = voxelMetAtPlane(plane, level);
+            if (!atPlane || segmentCrossesVoxelPlane(plane, centre, size, p, b, kPlaneTolerance)) {
                 transmittance *= 1.0 - coverage;
                 if (transmittance <= u) {
                     hit = surfaceAt(plane, albedoCoverage,
-                            hitPoint(plane, onePlane, centre, size, p, b), dir);
+                            hitPoint(plane, atPlane, centre, size, p, b), dir);
                     return true;
                 }
             }

@@ -4,6 +4,7 @@
 #include "GpuTest.h"
 #include "ImageCompare.h"
 #include "TestScenes.h"
+#include "VoxelFrame.h"
 
 #include "gi/voxel/VoxelizationManager.h"
 #include "reference/ImageMetrics.h"
@@ -33,33 +34,6 @@ std::size_t texelIndex(const voxel::CascadeVolume& volume, glm::ivec3 voxel, int
     return (std::size_t(level) * v + std::size_t(voxel.z)) * v * v + std::size_t(voxel.y) * v +
            std::size_t(voxel.x);
 }
-
-// One voxel-GI frame of `scene` from its camera 0; the renderer stays alive for read-backs.
-class VoxelFrame {
-public:
-    VoxelFrame(const scene::Scene& scene, const Settings& settings, glm::ivec2 size,
-            render::OutputComponent output = render::OutputComponent::Final) {
-        std::string error;
-        EXPECT_TRUE(mRenderer.init(scene, settings, mShaders, error)) << error;
-        EXPECT_TRUE(mRenderer.setMode(render::GiMode::Voxel, error)) << error;
-        const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0],
-                float(size.x) / float(size.y), scene.bounds);
-        gl::GpuProfiler profiler;
-        mRenderer.render(camera, size, output, profiler);
-        profiler.flush();
-    }
-    const voxel::VoxelizationManager& manager() const {
-        return static_cast<const voxel::VoxelizationManager&>(*mRenderer.technique());
-    }
-    core::Image image() const { return mRenderer.readback(); }
-    const render::FrameRenderer& renderer() const { return mRenderer; }
-    // The factor the volumes' irradiance carries (scene/Exposure.h).
-    float exposure() const { return mRenderer.gpuScene().exposure(); }
-
-private:
-    gl::ShaderLibrary mShaders;
-    render::FrameRenderer mRenderer;
-};
 
 // Points spread over every triangle of the scene, `spacing` apart or closer.
 std::vector<glm::vec3> surfaceSamples(const scene::Scene& scene, float spacing) {
