@@ -244,12 +244,13 @@ def say_error_source(say, m, last):
         "of the light where the blocks hide about")
     say(f"{100 * (1 - 1 / m['area', 'none', last][1]):.0f}% (if the estimator without visibility "
         "is otherwise right). The visibility march tests each")
-    say("voxel's surface plane (shaders/atlas/voxel_visibility.glsl), so rays that graze a wall")
-    say("within a voxel of it pass; testing coverage alone had darkened bands wherever two")
-    say("surfaces meet. What occlusion remains too strong is at edges and corners, where a voxel")
-    say("holds two planes and blocks by its coverage, and the rest of the error is texel noise,")
-    say("texel-sized seams and bright texels where the clamped 1/r^2 next to the receiver is "
-        "hit.\n")
+    say("voxel's surface plane, or the mean plane where surfaces meet at an edge or a corner")
+    say("(shaders/common/voxel_visibility.glsl), so rays that graze a wall within a voxel of it,")
+    say("or pass a block's edge outside it, pass; testing coverage alone had darkened bands")
+    say("wherever two surfaces meet. What occlusion remains too strong is on the blocks' rims,")
+    say("where a voxel holding one plane is taken to hold it across the whole voxel")
+    say("(accuracy-analysis.md), and the rest of the error is texel noise, texel-sized seams and")
+    say("bright texels where the clamped 1/r^2 next to the receiver is hit.\n")
     say("| atlas, area + voxel, 1024 samples | atlas, merz2010 + voxel, 1024 samples | reference |")
     say("|---|---|---|")
     say("| ![area](images/atlas_cornell_indirect_area_voxel.png) "
