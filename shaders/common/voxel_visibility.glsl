@@ -8,10 +8,11 @@
 // coverage: a ray that grazes a wall within a voxel of it, as rays between neighbouring
 // receivers near a corner do, passes, and so does a ray passing a block's edge outside it.
 // Voxels of surfaces facing apart (both faces of a slab thinner than a voxel) and any voxel of
-// a coarser level, whose plane is an average of its children, block by their coverage alone. Both ends first leave their own surface by one voxel
-// along its normal, and the voxels they then start in do not block, so a surface never
-// occludes itself (the segment shrunk at both ends, epsilon exits against self-hits). Parts of
-// the segment outside the cascade count as empty.
+// a coarser level, whose plane is an average of its children, block by their coverage alone.
+// Both ends first leave their own surface by one voxel along its normal, and the voxels they
+// then start in do not block, so a surface never occludes itself (the segment shrunk at both
+// ends, epsilon exits against self-hits). Parts of the segment outside the cascade count as
+// empty.
 #ifndef GI_VOXEL_VISIBILITY_GLSL
 #define GI_VOXEL_VISIBILITY_GLSL
 

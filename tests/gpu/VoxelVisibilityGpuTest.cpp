@@ -1,7 +1,7 @@
 // The visibility march through the voxel occupancy (shaders/common/voxel_visibility.glsl), which
 // converged atlas GI and VPL GI weight every sender by: segments past and through a voxelized
-// cube's edge and a slab thinner than a voxel, on one scene-centred level whose voxels the
-// test reads back to place the segments.
+// cube's edge and a slab thinner than a voxel, on one scene-centred level whose placement the
+// test checks puts the edge mid-voxel and both slab faces in one voxel.
 #include "ComputeProbe.h"
 #include "GpuTest.h"
 #include "TestScenes.h"
@@ -11,7 +11,8 @@
 
 #include <glad/gl.h>
 
-#include <cmath>
+#include <algorithm>
+#include <vector>
 
 namespace gi::test {
 namespace {
@@ -48,7 +49,8 @@ struct SegmentCase {
 // A segment from `from` to `to` whose ends face each other.
 SegmentCase segment(glm::vec3 from, glm::vec3 to) {
     const glm::vec3 dir = glm::normalize(to - from);
-    return {glm::vec4(from, 0.0f), glm::vec4(dir, 0.0f), glm::vec4(to, 0.0f), glm::vec4(-dir, 0.0f)};
+    return {glm::vec4(from, 0.0f), glm::vec4(dir, 0.0f), glm::vec4(to, 0.0f),
+            glm::vec4(-dir, 0.0f)};
 }
 
 // Where p lies within its voxel of level 0, in voxel sizes from the voxel's lower corner.
@@ -108,7 +110,8 @@ TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStil
             // Through the middle of the cube's -x face.
             segment({-0.6f, 0.03f, 0.02f}, {0.0f, 0.03f, 0.02f}),
             // Through the slab, whose two faces share a voxel.
-            segment(slabLine + glm::vec3(0.35f, 0.0f, 0.0f), slabLine + glm::vec3(0.8f, 0.0f, 0.0f)),
+            segment(slabLine + glm::vec3(0.35f, 0.0f, 0.0f),
+                    slabLine + glm::vec3(0.8f, 0.0f, 0.0f)),
             // Beside everything.
             segment({-0.8f, 0.6f, 0.6f}, {0.8f, 0.6f, 0.6f}),
     };
