@@ -127,11 +127,19 @@ struct TemporalSettings {
     bool operator==(const TemporalSettings&) const = default;
 };
 
+// reference.pixel, in the order of its choices.
+enum ReferencePixel : int { kReferencePixelArea = 0, kReferencePixelCentre = 1 };
+
 // The Embree ground-truth renderer (src/reference/); see ReferenceRenderer.h.
 struct ReferenceSettings {
     int spp = 64;                 // reference.spp: paths per pixel, jittered over the pixel square
     int bounces = 1;              // reference.bounces: indirect bounces (1 = direct + one bounce)
     int seed = 1;                 // reference.seed: seeds every pixel's random sequence
+    // reference.pixel: kReferencePixelArea averages each pixel's square, as a camera's sensor
+    // would; kReferencePixelCentre sends every path through the pixel's centre, the point a
+    // rasterizer's one sample per pixel shades, so GI is scored without the silhouettes'
+    // aliasing (a pixel straddling an edge is part block, part wall only in the area form).
+    int pixel = kReferencePixelArea;
     int threads = 0;              // reference.threads: worker threads, 0 = all cores
     // Not a key of its own: the material settings' glossyMaterials(), filled in by
     // Settings::pathTracer() (the reference cache keys glossy renders apart).

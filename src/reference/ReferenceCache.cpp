@@ -161,6 +161,8 @@ std::string referenceCacheKey(const scene::Scene& scene, const scene::CameraView
     h.value(settings.spp);
     h.value(settings.bounces);
     h.value(settings.seed);
+    // Area keys stay as they were before the choice existed, so their entries remain valid.
+    if (settings.pixel == kReferencePixelCentre) h.string("pixel centre");
     // Lambertian keys stay as they were before the glossy model existed, so their entries
     // remain valid; glossy ones add the model and every material's metallic and roughness.
     if (settings.glossy) {

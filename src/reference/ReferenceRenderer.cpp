@@ -36,10 +36,11 @@ struct PixelEstimate {
 
 // Traces pathsPerHalf[h] paths for each half h of pixel (x, y). Half h draws from its own
 // streams seeded by (seed, pixel, h): Owen-scrambled Sobol' points for the pixel position,
-// first bounce and first light, PCG32 for everything else.
+// first bounce and first light, PCG32 for everything else. With `centre` every path leaves
+// through the pixel's centre and the position's two dimensions go unused.
 PixelEstimate renderPixel(const PathTracer& tracer, int x, int y, std::uint64_t seed,
-        std::size_t pixel, const int pathsPerHalf[2], std::vector<LightVertex>& lightVertices,
-        RayCounts& rays) {
+        std::size_t pixel, const int pathsPerHalf[2], bool centre,
+        std::vector<LightVertex>& lightVertices, RayCounts& rays) {
     PixelEstimate estimate;
     const std::uint64_t stream = mix64(seed ^ std::uint64_t(pixel));
     for (int h = 0; h < 2; ++h) {
@@ -49,8 +50,10 @@ PixelEstimate renderPixel(const PathTracer& tracer, int x, int y, std::uint64_t 
         for (int s = 0; s < pathsPerHalf[h]; ++s) {
             float u[kSobolDimensions];
             sampler.point(std::uint32_t(s), u);
+            const float px = centre ? 0.5f : u[0];
+            const float py = centre ? 0.5f : u[1];
             const PathSample path =
-                    tracer.trace(float(x) + u[0], float(y) + u[1], u + 2, rng, lightVertices, rays);
+                    tracer.trace(float(x) + px, float(y) + py, u + 2, rng, lightVertices, rays);
             direct += glm::dvec3(path.direct);
             indirect += glm::dvec3(path.indirect);
             estimate.hits += path.hit ? 1 : 0;
@@ -69,6 +72,7 @@ struct RenderJob {
     int spp;
     std::uint64_t seed;
     int pathsPerHalf[2];
+    bool pixelCentre;
     ReferenceResult& result;
     HalfImages& halves;
 };
@@ -80,7 +84,7 @@ void renderTile(const RenderJob& job, int x0, int y0, int x1, int y1,
         for (int x = x0; x < x1; ++x) {
             const std::size_t pixel = std::size_t(y) * std::size_t(job.width) + std::size_t(x);
             const PixelEstimate e = renderPixel(job.tracer, x, y, job.seed, pixel,
-                    job.pathsPerHalf, lightVertices, rays);
+                    job.pathsPerHalf, job.pixelCentre, lightVertices, rays);
             const double wA = double(job.pathsPerHalf[0]) / job.spp;
             const double wB = double(job.pathsPerHalf[1]) / job.spp;
             const glm::dvec3 direct = wA * e.direct[0] + wB * e.direct[1];
@@ -165,7 +169,8 @@ ReferenceResult ReferenceRenderer::render(const scene::CameraView& camera, int w
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
     const std::uint64_t seed = mix64(std::uint64_t(std::uint32_t(settings.seed)));
-    const RenderJob job{tracer, width, spp, seed, {(spp + 1) / 2, spp / 2}, result, halves};
+    const RenderJob job{tracer, width, spp, seed, {(spp + 1) / 2, spp / 2},
+            settings.pixel == kReferencePixelCentre, result, halves};
 
     std::atomic<int> nextTile{0};
     std::mutex progressMutex;

@@ -107,6 +107,7 @@ TEST(ReferenceCache, KeyCoversEveryInput) {
     EXPECT_TRUE(differs([](Fixture& f) { f.settings.spp = 8; }));
     EXPECT_TRUE(differs([](Fixture& f) { f.settings.bounces = 2; }));
     EXPECT_TRUE(differs([](Fixture& f) { f.settings.seed = 2; }));
+    EXPECT_TRUE(differs([](Fixture& f) { f.settings.pixel = kReferencePixelCentre; }));
     EXPECT_FALSE(differs([](Fixture& f) { f.settings.threads = 1; }))
             << "the image does not depend on the thread count";
     EXPECT_TRUE(differs([](Fixture& f) { f.scene.lights[0].intensity = 2.0f; }));
@@ -229,6 +230,29 @@ TEST(ReferenceRenderer, ReportsProgressUpToOne) {
     EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
     EXPECT_EQ(std::count(fractions.begin(), fractions.end(), 1.0), 1);
     EXPECT_EQ(result.width(), 40);
+}
+
+// reference.pixel=centre sends every path through the pixel's centre: each pixel is wholly
+// quad or wholly background (the area form has pixels straddling the quads' outline), and a
+// point light's direct light at that one point is the same in both halves of the paths, so
+// its noise estimate is exactly zero.
+TEST(ReferenceRenderer, PixelCentrePathsAllLeaveThroughTheCentre) {
+    Fixture area;
+    area.settings.spp = 16;
+    Fixture centre = area;
+    centre.settings.pixel = kReferencePixelCentre;
+    const ReferenceResult a = renderReference(area.scene, area.camera, 40, 30, area.settings);
+    const ReferenceResult c =
+            renderReference(centre.scene, centre.camera, 40, 30, centre.settings);
+    const auto partial = [](const ReferenceResult& r) {
+        return std::count_if(r.coverage.begin(), r.coverage.end(),
+                [](float v) { return v > 0.0f && v < 1.0f; });
+    };
+    EXPECT_GT(partial(a), 10) << "the quads' outline crosses pixels";
+    EXPECT_EQ(partial(c), 0);
+    EXPECT_GT(std::count(c.coverage.begin(), c.coverage.end(), 1.0f), 200);
+    EXPECT_GT(a.noise.direct, 0.0);
+    EXPECT_EQ(c.noise.direct, 0.0);
 }
 
 TEST(ReferenceRenderer, DegenerateRequests) {
