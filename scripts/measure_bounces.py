@@ -8,7 +8,7 @@ against the all-bounce path tracer (R = 16; reference.spp=1024, cached on disk).
 renders `--set render.frames=N` frames so its progressive sums reach atlas.target_samples.
 
 Usage: /usr/bin/python3 scripts/measure_bounces.py [--bin build/voxatlas] [--scenes a,b]
-       [--bounces 1,2] [--modes voxel,atlas] [--atlas-frames 11] [--page]
+       [--bounces 1,2] [--modes voxel,atlas] [--atlas-frames 11] [--set KEY=VALUE ...] [--page]
 Prints one table row per scene, technique and bounce count; --page writes
 docs/results-bounces.md's table (the page's text outside the markers is kept) and, for the
 scenes in STRIPS, docs/images/bounces_<scene>.png: the path tracer with 1, 2 and all
@@ -45,8 +45,8 @@ def reference(path, bounces, png=None):
     return image, common.reference_mask(image)
 
 
-def technique(path, mode, bounces, atlas_frames, png=None):
-    settings = {**BASE, "gi.bounces": bounces}
+def technique(path, mode, bounces, atlas_frames, extra, png=None):
+    settings = {**BASE, **extra, "gi.bounces": bounces}
     if mode == "atlas":
         settings["render.frames"] = atlas_frames
     return common.render_indirect(path, mode, settings, SIZE, out_png=png).image
@@ -75,8 +75,11 @@ def main():
     parser.add_argument("--bounces", default="1,2")
     parser.add_argument("--modes", default="voxel,atlas")
     parser.add_argument("--atlas-frames", type=int, default=11)
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="a further setting for the techniques (not the path tracer)")
     parser.add_argument("--page", action="store_true", help=f"write docs/{PAGE}'s table")
     args = parser.parse_args()
+    extra = dict(item.split("=", 1) for item in args.set)
     common.use_binary(args.bin)
     bounce_counts = [int(b) for b in args.bounces.split(",")]
     modes = args.modes.split(",")
@@ -96,7 +99,7 @@ def main():
                 same = reference(path, bounces, pngs[i])
                 png = os.path.join(images, f"{name}_{mode}_{bounces}.png")
                 pngs.append(png)
-                image = technique(path, mode, bounces, args.atlas_frames, png)
+                image = technique(path, mode, bounces, args.atlas_frames, extra, png)
                 rmse, energy = common.errors(image, same[0], same[1])
                 rmse_all, energy_all = common.errors(image, all_bounce[0], all_bounce[1])
                 row = (f"| {name} | {mode} | {bounces} | {fmt(rmse)} | {fmt(energy)} | "
