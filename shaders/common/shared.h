@@ -452,7 +452,8 @@ struct AtlasUniforms {                  // std140
                                         // 1/r^2 uses, (2 texel edges)^2 in m^2; merz2010:
                                         // 2 pi), w = 1 / samples accumulated
     vec4 dilation;                      // x = dilation radius (texels), y = 1 if the back-side
-                                        // layers exist (double-sided materials), zw = unused
+                                        // layers exist (double-sided materials), z = 1 with
+                                        // atlas.filter, w = unused
     vec4 sky;                           // rgb = radiance of the sky lights together
                                         // (W/(m^2 sr)), w = sky directions per receiver and set
 };

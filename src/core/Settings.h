@@ -90,6 +90,8 @@ struct AtlasSettings {
     int targetSamples = 1024;     // atlas.target_samples: stop accumulating at this count
     bool rotate = true;           // atlas.rotate: new Cranley-Patterson offset per set
     int gutter = 2;               // atlas.gutter: empty texels between charts
+    bool filter = true;           // atlas.filter: each texel's E_ind averaged over the 3x3
+                                  // texels of its own surface (shaders/atlas/dilate.frag)
     bool cache = true;            // atlas.cache: keep built atlases on disk
     bool operator==(const AtlasSettings&) const = default;
 };

@@ -20,6 +20,8 @@ void AtlasDilatePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, in.atlasUniforms.id());
     glBindTextureUnit(BIND_TEX_ATLAS_SUMS, in.textures.sumsOf(in.bounce).id());
     glBindTextureUnit(BIND_TEX_ATLAS_SUMS_BACK, in.textures.sumsBackOf(in.bounce).id());
+    glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, in.textures.normal.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     mPass.draw(mFramebuffer, mResolution);
 }
 

@@ -157,8 +157,8 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
     // The dilation normalises the sums as they are after this frame's gather.
     const float normalisation = mContent.samples > 0 ? 1.0f / float(mContent.samples) : 0.0f;
     u.sampling = glm::vec4(plan.rotation, estimatorConstant, normalisation);
-    u.dilation = glm::vec4(
-            float((mSettings.gutter + 1) / 2), mTextures.backSides ? 1.0f : 0.0f, 0.0f, 0.0f);
+    u.dilation = glm::vec4(float((mSettings.gutter + 1) / 2), mTextures.backSides ? 1.0f : 0.0f,
+            mSettings.filter ? 1.0f : 0.0f, 0.0f);
     const glm::vec3 sky = scene::skyRadiance(in.lights) * in.scene.exposure();
     u.sky = glm::vec4(sky, sky != glm::vec3(0.0f) ? float(kSkyDirectionsPerSet) : 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
