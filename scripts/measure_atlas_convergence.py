@@ -249,8 +249,11 @@ def say_error_source(say, m, last):
     say("or pass a block's edge outside it, pass; testing coverage alone had darkened bands")
     say("wherever two surfaces meet. What occlusion remains too strong is on the blocks' rims,")
     say("where a voxel holding one plane is taken to hold it across the whole voxel")
-    say("(accuracy-analysis.md), and the rest of the error is texel noise, texel-sized seams and")
-    say("bright texels where the clamped 1/r^2 next to the receiver is hit.\n")
+    say("(accuracy-analysis.md). The rest is texel noise, largest beside concave edges, whose")
+    say("receivers rarely draw the adjacent face's nearby texels that light them most: most of")
+    say("them come out too dark and a few far too bright. Every row here averages each texel's")
+    say("light with its 3x3 neighbours on its own surface (atlas.filter, the default), which")
+    say("keeps about a seventh of the noise's variance (accuracy-analysis.md).\n")
     say("| atlas, area + voxel, 1024 samples | atlas, merz2010 + voxel, 1024 samples | reference |")
     say("|---|---|---|")
     say("| ![area](images/atlas_cornell_indirect_area_voxel.png) "
