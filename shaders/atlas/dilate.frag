@@ -9,7 +9,7 @@
 // 18 degrees), its plane (within a fifth of a texel edge) and adjacent (within two edges).
 // A receiver near a concave edge draws the adjacent face's nearby texels rarely, so its
 // estimate is usually too dark and now and then far too bright; its neighbours draw their own
-// senders, and the mean of nine independent estimates has a third of the noise. Light that
+// senders, and the tent-weighted mean keeps about a seventh of their variance. Light that
 // changes across a texel or two (contact shadows) is softened by about a texel.
 #include "atlas_common.glsl"
 
