@@ -79,6 +79,8 @@ def main():
                         help="a further setting for the techniques (not the path tracer)")
     parser.add_argument("--page", action="store_true", help=f"write docs/{PAGE}'s table")
     args = parser.parse_args()
+    if any("=" not in item for item in args.set):
+        parser.error("--set takes KEY=VALUE")
     extra = dict(item.split("=", 1) for item in args.set)
     common.use_binary(args.bin)
     bounce_counts = [int(b) for b in args.bounces.split(",")]
