@@ -49,17 +49,22 @@ layout(std430, binding = BIND_SSBO_ATLAS_SENDER_POOL) readonly buffer SenderPool
 };
 
 
-// The sky's irradiance on the side facing n (atlas.sky: its radiance and how many directions):
-// cosine-distributed directions, stratified in their polar coordinate and new for each
-// receiver and set, each seeing the sky unless the voxel occupancy blocks it on its way out of
-// the cascade (without voxel visibility nothing blocks it).
+// The samples [x, y) of the set and the sky directions [z, w) this draw adds: a set's loops
+// are split over draws that each stay within SHADER_LOOP_ITERATIONS (AtlasGatherPass).
+layout(location = LOC_ATLAS_GATHER_RANGE) uniform ivec4 gatherRange;
+
+// This draw's share of the sky's irradiance on the side facing n (atlas.sky: its radiance and
+// how many directions): cosine-distributed directions, stratified in their polar coordinate
+// and new for each receiver and set, each seeing the sky unless the voxel occupancy blocks it
+// on its way out of the cascade (without voxel visibility nothing blocks it). The draws' shares
+// add up to the sky's irradiance.
 vec3 skyIrradiance(vec3 x, vec3 n, uint seed) {
     int directions = int(atlas.sky.w);
-    if (directions <= 0) return vec3(0.0);
+    if (directions <= 0 || gatherRange.z >= gatherRange.w) return vec3(0.0);
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t);
     float visible = 0.0;
-    for (int i = 0; i < directions; ++i) {
+    for (int i = gatherRange.z; i < gatherRange.w; ++i) {
         float u1 = (float(i) + float(hash(seed + uint(2 * i)) >> 8) / 16777216.0) / float(directions);
         float u2 = float(hash(seed + uint(2 * i + 1)) >> 8) / 16777216.0;
         float r = sqrt(u1), phi = 2.0 * PI * u2;
@@ -93,7 +98,7 @@ void main() {
     // between rotated sets), so its own estimate converges as sets accumulate.
     uint receiver = hash(uint(texel.y * resolution + texel.x) ^ floatBitsToUint(atlas.sampling.y));
     vec3 sum = vec3(0.0), sumBack = vec3(0.0);
-    for (int i = 0; i < count; ++i) {
+    for (int i = gatherRange.x; i < gatherRange.y; ++i) {
         ivec2 t;
         if (area) {
             uint k = hash(receiver + uint(i)) % uint(ATLAS_POOL_STRIDE);

@@ -130,7 +130,7 @@
                                         // voxel's own cones gathered (the pyramid source's
                                         // unit: no pass binds both)
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
-#define BIND_IMG_VPL_TARGET         5   // rgba16f, the VPL gather's or filter's output
+#define BIND_IMG_VPL_TARGET         5   // the VPL gather's (rgba32f) or filter's (rgba16f) output
 #define BIND_IMG_VPL_DEBUG_IDS      6   // r32ui, the VPL debug views: the key of the VPL drawn
                                         // over each pixel (VplDebugPass), 0 = none
 #define BIND_IMG_VPL_DEBUG_TARGET   7   // rgba32f, a VPL debug view's image
@@ -157,6 +157,7 @@
 #define VOXEL_FACES                 6
 
 #define VOXEL_MAX_LEVELS            8
+#define VOXEL_VISIBILITY_MAX_STEPS  512 // voxels one segment of voxel_visibility.glsl walks at most
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
@@ -193,6 +194,7 @@
 #define SVO_CHILD_MASK              0x7fffffffu   // first of its 8 children, 0 = none
 #define SVO_COORD_BITS              10            // leaf coordinates packed 10 bits per axis
 #define SVO_MAX_DEPTH               10            // 1024 leaves per side at most
+#define SVO_VISIBILITY_MAX_STEPS    2048          // restarts of one svo_visibility.glsl segment
 #define SVO_LOCAL_SIZE              64            // build passes run 64 invocations a group
 #define SVO_PASS_FLAG               0             // build pass: flag the nodes of a level
 #define SVO_PASS_ALLOCATE           1             // build pass: give flagged nodes 8 children
@@ -261,6 +263,16 @@
                                         // debug splat highlights; -1 = every VPL
 #define LOC_VPL_DEBUG_RADIUS        32  // int, radius of a highlighted VPL's disc (pixels)
 #define LOC_VPL_DEBUG_VIEW          33  // int, VPL_DEBUG_* the compose pass draws
+#define LOC_ATLAS_GATHER_RANGE      34  // ivec4, xy = the samples [x, y) of the set and zw = the
+                                        // sky directions [z, w) this gather draw adds
+#define LOC_VPL_GATHER_RANGE        35  // ivec3, xy = the VPLs [x, y) of each pixel's subset this
+                                        // dispatch adds, z = 1 on the last dispatch
+
+// llvmpipe (Mesa's gallivm) ends every loop of a shader invocation, silently, once all of its
+// loops together have run this many iterations (LP_MAX_TGSI_LOOP_ITERATIONS): a gather whose
+// loops run longer drops the rest of its samples. Passes whose loops can run longer split
+// their work into draws or dispatches that stay within it (gl/LoopBudget.h).
+#define SHADER_LOOP_ITERATIONS      65535
 
 // Tone curves of the displayed image (core/ToneMap.h, common/tonemap.glsl).
 #define TONE_CURVE_NONE             0   // clamp to [0, 1]

@@ -13,9 +13,9 @@
 
 #include "svo.glsl"
 
-// More steps than any segment through a 1024^3 octree takes between occupied leaves' empty
-// neighbours; a segment that runs out of steps counts as unblocked.
-const int kSvoMaxSteps = 2048;
+// SVO_VISIBILITY_MAX_STEPS: more steps than any segment through a 1024^3 octree takes between
+// occupied leaves' empty neighbours; a segment that runs out of steps counts as unblocked. Each
+// step descends at most depth + 1 levels: SparseVoxelOctree::visibilityLoopIterations.
 
 float svoMin3(vec3 v) { return min(v.x, min(v.y, v.z)); }
 float svoMax3(vec3 v) { return max(v.x, max(v.y, v.z)); }
@@ -39,7 +39,7 @@ float svoSegmentVisibility(vec3 a, vec3 b) {
     float t = max(svoMax3(min(t0, t1)), svo.march.y);
     float tEnd = min(svoMin3(max(t0, t1)), len - svo.march.y);
     int depth = svoDepth();
-    for (int step = 0; step < kSvoMaxSteps && t < tEnd; ++step) {
+    for (int step = 0; step < SVO_VISIBILITY_MAX_STEPS && t < tEnd; ++step) {
         vec3 p = a + dir * t;
         uint node = 0u;
         vec3 lo = vec3(0.0);

@@ -12,7 +12,9 @@
 // Both ends first leave their own surface by one voxel along its normal, and the voxels they
 // then start in do not block, so a surface never occludes itself (the segment shrunk at both
 // ends, epsilon exits against self-hits). Parts of the segment outside the cascade count as
-// empty.
+// empty. A segment runs at most 2 l + VOXEL_VISIBILITY_MAX_STEPS (1 + l) loop iterations with l
+// levels (finestLevel loops over the levels): OccupancyVolume::visibilityLoopIterations, which
+// its callers split their work by (SHADER_LOOP_ITERATIONS).
 #ifndef GI_VOXEL_VISIBILITY_GLSL
 #define GI_VOXEL_VISIBILITY_GLSL
 
@@ -21,8 +23,6 @@
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;
-
-const int kMaxVisibilitySteps = 512;
 
 float endOffset(vec3 p) {
     int level = finestLevel(p);
@@ -48,7 +48,7 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
     float t = 0.0;
     float transmittance = 1.0;
     float coarsest = levelVoxelSize(voxelLevels() - 1);
-    for (int i = 0; i < kMaxVisibilitySteps && t < len && transmittance > 0.01; ++i) {
+    for (int i = 0; i < VOXEL_VISIBILITY_MAX_STEPS && t < len && transmittance > 0.01; ++i) {
         vec3 p = a + dir * t;
         int level = finestLevel(p);
         if (level < 0) {

@@ -15,7 +15,13 @@ layout(std430, binding = BIND_SSBO_VPLS) readonly buffer VplBlockData {
     GpuVpl vpls[];
 };
 
-layout(binding = BIND_IMG_VPL_TARGET, rgba16f) writeonly uniform image2D target;
+// Each pixel's subset is split over dispatches that each stay within SHADER_LOOP_ITERATIONS
+// (VplGatherPass): this one adds the subset's VPLs [x, y) to what the earlier ones stored;
+// z = 1 on the last, which stores the result (the visible fraction's counts, until then).
+layout(location = LOC_VPL_GATHER_RANGE) uniform ivec3 gatherRange;
+
+// 32-bit floats: the dispatches' sums add up without half-float rounding at each store.
+layout(binding = BIND_IMG_VPL_TARGET, rgba32f) uniform image2D target;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -33,9 +39,14 @@ void main() {
     ivec2 inTile = pixel % tile;
     int first = inTile.x + tile * inTile.y;
     float clampB = vpl.gather.x;
-    vec3 e = vec3(0.0);
-    float visible = 0.0, facing = 0.0;   // the vpl-visibility debug view's counts
-    for (int i = first; i < vpl.counts.x; i += stride) {
+    bool firstRange = gatherRange.x == 0, lastRange = gatherRange.z != 0;
+    vec4 earlier = firstRange ? vec4(0.0) : imageLoad(target, pixel);
+    bool fraction = vpl.counts.w == VPL_GATHER_VISIBLE_FRACTION;
+    // Sums so far: E_ind (scaled by vpl.gather.y as stored), or the debug view's counts.
+    vec3 e = fraction ? vec3(0.0) : earlier.rgb / vpl.gather.y;
+    float visible = fraction ? earlier.r : 0.0, facing = fraction ? earlier.g : 0.0;
+    int end = min(vpl.counts.x, first + gatherRange.y * stride);
+    for (int i = first + gatherRange.x * stride; i < end; i += stride) {
         GpuVpl light = vpls[i];
         vec3 d = light.position.xyz - x;
         float r2 = dot(d, d);
@@ -48,8 +59,9 @@ void main() {
         visible += visibility;
         facing += 1.0;
     }
-    if (vpl.counts.w == VPL_GATHER_VISIBLE_FRACTION) {
-        imageStore(target, pixel, vec4(vec3(visible / max(facing, 1.0)), position.w));
+    if (fraction) {
+        imageStore(target, pixel, lastRange ? vec4(vec3(visible / max(facing, 1.0)), position.w)
+                                            : vec4(visible, facing, 0.0, position.w));
         return;
     }
     imageStore(target, pixel, vec4(min(e * vpl.gather.y, vec3(HALF_STORE_MAX)), position.w));

@@ -10,6 +10,7 @@
 #include "gi/ShadowMaps.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
+#include "gl/Shared.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/CameraView.h"
 #include "scene/GpuScene.h"
@@ -37,6 +38,13 @@ struct OccupancyVolume {
                                        // normal and the surface's offset along it
     const gl::Buffer& voxelUniforms;   // VoxelUniforms (std140) at BIND_UBO_VOXEL
     std::uint64_t version = 0;         // changes whenever the occupancy is recomputed
+    int levels = 1;                    // cascade levels in the textures
+
+    // The loop iterations one segment of common/voxel_visibility.glsl runs at most: its walk's
+    // steps, each finding its level among `levels`, and the two ends' levels.
+    [[nodiscard]] int visibilityLoopIterations() const {
+        return 2 * levels + VOXEL_VISIBILITY_MAX_STEPS * (1 + levels);
+    }
 };
 
 struct GiFrameInputs {

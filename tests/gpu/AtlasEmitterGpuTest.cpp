@@ -92,7 +92,7 @@ TEST_F(AtlasGpuTest, VoxelVisibilityBlocksAnOccludedEmitter) {
     ASSERT_TRUE(voxels.configure(settings, error)) << error;
     const GiFrameInputs voxelInputs{gpuScene, scene.lights, shadows, frameUniforms, camera, size};
     voxels.update(voxelInputs, profiler);
-    const OccupancyVolume occupancy{voxels.textures().albedo, voxels.textures().normal, voxels.uniforms()};
+    const OccupancyVolume occupancy = voxels.occupancy();
 
     for (const int visibility : {ATLAS_VISIBILITY_NONE, ATLAS_VISIBILITY_VOXEL}) {
         settings.atlas.visibility = visibility;

@@ -89,5 +89,25 @@ TEST_F(VplGpuTest, InterleavingKeepsEveryVplsEnergy) {
     EXPECT_NEAR(tiled.energyRatio, every.energyRatio, 0.05 * every.energyRatio);
 }
 
+// Every VPL at every pixel, 4096 of them, each tested for visibility through the voxel
+// occupancy: llvmpipe silently ends an invocation's loops after 65535 iterations in all
+// (SHADER_LOOP_ITERATIONS), and one dispatch of this gather kept 0.31 of the light the
+// interleaved gather (256 VPLs a pixel) finds. The gather now splits each pixel's VPLs over
+// dispatches within that budget and sums them in 32-bit floats (in half floats, 65 dispatches
+// lost 1%). Measured on llvmpipe at 48x48: every VPL 0.965 of the path tracer's energy,
+// interleaved 0.976.
+TEST_F(VplGpuTest, EveryVplCountsWithVisibilityAtEveryPixel) {
+    if (!mContext) GTEST_SKIP();
+    Settings tiledSettings = vplSettings(true, VPL_VISIBILITY_CASCADE);
+    Settings everySettings = vplSettings(false, VPL_VISIBILITY_CASCADE);
+    tiledSettings.vpl.count = everySettings.vpl.count = 4096;
+    const reference::ImageErrors tiled = score(tiledSettings);
+    const reference::ImageErrors every = score(everySettings);
+    std::printf("vpl cornell, 4096 VPLs, cascade visibility: tiled energy %.3f, every VPL at "
+                "every pixel %.3f\n",
+            tiled.energyRatio, every.energyRatio);
+    EXPECT_NEAR(every.energyRatio, tiled.energyRatio, 0.03 * tiled.energyRatio);
+}
+
 } // namespace
 } // namespace gi::test

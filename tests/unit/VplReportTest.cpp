@@ -41,9 +41,9 @@ TEST(VplReport, PlannedMemoryFollowsTheRenderSizeAndTheVplCount) {
         }
     }
     // RGBA32F + RGBA16F + RGBA32F + depth32 per RSM texel; RGBA32F + RGBA16F + depth32 +
-    // two RGBA16F per pixel; three vec4 per VPL.
+    // RGBA32F (the gather's sums) + RGBA16F per pixel; three vec4 per VPL.
     EXPECT_EQ(rsm, std::size_t(64 * 64) * (16 + 8 + 16 + 4));
-    EXPECT_EQ(screen, std::size_t(100 * 50) * (16 + 8 + 4 + 8 + 8));
+    EXPECT_EQ(screen, std::size_t(100 * 50) * (16 + 8 + 4 + 16 + 8));
     EXPECT_EQ(vpls, std::size_t(1000) * 48);
 }
 

@@ -1,5 +1,6 @@
 #include "gi/atlas/AtlasGatherPass.h"
 
+#include "gl/LoopBudget.h"
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
@@ -69,7 +70,16 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
     }
     glBindVertexArray(mEmpty.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // A sample walks one segment; a sky direction one for each side of a double-sided receiver.
+    const int segment = in.occupancy ? in.occupancy->visibilityLoopIterations() : 0;
+    for (const glm::ivec2& sky : gl::rangesWithinLoopBudget(in.skyDirections, 2 * (1 + segment))) {
+        glProgramUniform4i(program, LOC_ATLAS_GATHER_RANGE, 0, 0, sky.x, sky.y);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    for (const glm::ivec2& samples : gl::rangesWithinLoopBudget(in.sampleCount, 1 + segment)) {
+        glProgramUniform4i(program, LOC_ATLAS_GATHER_RANGE, samples.x, samples.y, 0, 0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     glBindVertexArray(0);
     glUseProgram(0);
     glDisable(GL_BLEND);

@@ -9,6 +9,8 @@
 //          visibility.
 // Outputs: AtlasTextures sums (RGBA32F): rgb += estimator constant x sum over this set,
 //          a = 1 where a receiver was written.
+// A set is drawn in several draws, the sky's directions and then ranges of the samples, each
+// within SHADER_LOOP_ITERATIONS for the visibility walk's longest segments (gl/LoopBudget.h).
 // With gi.bounces > 1 bounce b reads the senders of AtlasTextures::senderRadiance(b) and adds
 // to sumsOf(b).
 #pragma once
@@ -32,6 +34,8 @@ public:
         const OccupancyVolume* occupancy; // nullptr: no visibility test
         const AtlasSenderSamplingPass& senderSampling; // executed for this set (area estimator)
         int bounce = 0;                   // 0: the direct light's gather, b: bounce b's
+        int sampleCount = 0;              // N, the set's samples (AtlasUniforms size.y)
+        int skyDirections = 0;            // the sky's directions per set (AtlasUniforms sky.w)
     };
     struct Outputs {
         const AtlasTextures& textures;    // sumsOf(bounce), a layer attach() bound (blended into)

@@ -16,6 +16,11 @@ namespace {
 // sets accumulate, so a still view converges whatever this is; more only costs time.
 constexpr int kSkyDirectionsPerSet = 16;
 
+// The sky's directions per set: none without a sky.
+int skyDirections(const GiFrameInputs& in) {
+    return scene::skyRadiance(in.lights) != glm::vec3(0.0f) ? kSkyDirectionsPerSet : 0;
+}
+
 bool sameLights(const std::vector<scene::Light>& a, const std::vector<scene::Light>& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -160,7 +165,7 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
     u.dilation = glm::vec4(float((mSettings.gutter + 1) / 2), mTextures.backSides ? 1.0f : 0.0f,
             mSettings.filter ? 1.0f : 0.0f, 0.0f);
     const glm::vec3 sky = scene::skyRadiance(in.lights) * in.scene.exposure();
-    u.sky = glm::vec4(sky, sky != glm::vec3(0.0f) ? float(kSkyDirectionsPerSet) : 0.0f);
+    u.sky = glm::vec4(sky, float(skyDirections(in)));
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
@@ -244,7 +249,8 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                 mSenderSampling.execute(
                         {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
             }
-            mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling, bounce},
+            mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling, bounce,
+                                    mSettings.samples, skyDirections(in)},
                     {mTextures}, profiler);
             mDilate.execute({mTextures, mUniforms, bounce}, {mTextures}, profiler);
         }

@@ -16,6 +16,7 @@
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
+#include "gl/Shared.h"
 #include "scene/GpuScene.h"
 
 #include <glm/glm.hpp>
@@ -69,6 +70,11 @@ public:
 
     const SvoStats& stats() const { return mStats; }
     bool built() const { return mStats.nodes > 0; }
+    // The loop iterations one segment of common/svo_visibility.glsl runs at most: its restarts,
+    // each descending from the root through every level.
+    [[nodiscard]] int visibilityLoopIterations() const {
+        return SVO_VISIBILITY_MAX_STEPS * (mStats.depth + 2);
+    }
     // For tests: every node word, and the occupied leaves of the last build's fragment list.
     [[nodiscard]] std::vector<std::uint32_t> readNodes() const;
     [[nodiscard]] std::vector<glm::uvec3> readFragmentLeaves() const;

@@ -1,6 +1,7 @@
 #include "gi/vpl/VplGatherPass.h"
 
 #include "gi/vpl/PixelDispatch.h"
+#include "gl/LoopBudget.h"
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
@@ -22,7 +23,7 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     const glm::ivec2 size = in.gBuffer.size();
     if (size != mSize) {
         mSize = size;
-        mResult = gl::createTargetTexture({GL_RGBA16F, "vpl/gathered"}, size);
+        mResult = gl::createTargetTexture({GL_RGBA32F, "vpl/gathered"}, size);
     }
     // The gather's own cost, apart from the filter: with cascade visibility most of it is the
     // march (results-vpl.md compares it with vpl.visibility=none).
@@ -43,7 +44,19 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
     }
     if (in.octree) in.octree->bind();
-    dispatchOverPixels(mResult, size);
+    const int segment = in.occupancy ? in.occupancy->visibilityLoopIterations()
+                        : in.octree  ? in.octree->visibilityLoopIterations()
+                                     : 0;
+    const std::vector<glm::ivec2> ranges =
+            gl::rangesWithinLoopBudget(std::max(in.vplsPerPixel, 1), 1 + segment);
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+        // Each dispatch reads what the one before stored.
+        if (i > 0) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glUseProgram(program);   // dispatchOverPixels ends with none
+        glProgramUniform3i(program, LOC_VPL_GATHER_RANGE, ranges[i].x, ranges[i].y,
+                i + 1 == ranges.size() ? 1 : 0);
+        dispatchOverPixels(mResult, size, i > 0 ? GL_READ_WRITE : GL_WRITE_ONLY, GL_RGBA32F);
+    }
 }
 
 } // namespace gi::vpl

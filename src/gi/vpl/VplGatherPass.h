@@ -3,7 +3,9 @@
 // per pixel (VplUniforms.counts.y).
 // Inputs : the G-buffer, the VPLs, VplUniforms, the voxel occupancy (cascade visibility) or
 //          the sparse voxel octree (svo visibility).
-// Outputs: result(), RGBA16F at the G-buffer's size: rgb = E_ind (W/m^2), a = view depth (m).
+// Each pixel's VPLs are split over dispatches that each stay within SHADER_LOOP_ITERATIONS for
+// the visibility's longest segments (gl/LoopBudget.h); each adds to what the last one stored.
+// Outputs: result(), RGBA32F at the G-buffer's size: rgb = E_ind (W/m^2), a = view depth (m).
 #pragma once
 
 #include "gi/GiTechnique.h"
@@ -20,6 +22,7 @@ public:
         const gl::Buffer& uniforms;           // VplUniforms
         const OccupancyVolume* occupancy;     // non-null: cascade visibility
         const SparseVoxelOctree* octree = nullptr;   // non-null: svo visibility
+        int vplsPerPixel = 0;                 // the most VPLs one pixel's subset holds
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);

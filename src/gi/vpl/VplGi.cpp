@@ -165,7 +165,10 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     writeUniforms(mVisibility, mDebugView == VPL_DEBUG_VISIBILITY ? VPL_GATHER_VISIBLE_FRACTION
                                                                   : VPL_GATHER_IRRADIANCE);
     mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
-    mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree}, profiler);
+    const int subsets = mSettings.interleave ? VPL_TILE * VPL_TILE : 1;
+    mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree,
+                            (mVplCount + subsets - 1) / subsets},
+            profiler);
     mFilter.execute({mGather.result(), mGBuffer, mUniforms}, profiler);
     mHasOutput = mGBuffer.size().x > 0;
     if (mDebugView >= 0) {

@@ -71,7 +71,7 @@ std::vector<gl::MemoryItem> plannedVplMemory(const VplSettings& settings,
             {"vpl/gbuffer_position", gl::textureBytes(GL_RGBA32F, screen, 1)},
             {"vpl/gbuffer_normal", gl::textureBytes(GL_RGBA16F, screen, 1)},
             {"vpl/gbuffer_depth", gl::textureBytes(GL_DEPTH_COMPONENT32F, screen, 1)},
-            {"vpl/gathered", gl::textureBytes(GL_RGBA16F, screen, 1)},
+            {"vpl/gathered", gl::textureBytes(GL_RGBA32F, screen, 1)},
             {"vpl/indirect", gl::textureBytes(GL_RGBA16F, screen, 1)},
     };
 }
