@@ -138,7 +138,13 @@ void printVplMemory(const scene::Scene& scene, const std::vector<scene::Light>& 
         std::printf("    %-22s %10.3f MiB\n", item.name.c_str(), mebibytes(item.bytes));
     }
     if (settings.vpl.visibility == VPL_VISIBILITY_CASCADE) {
-        std::printf("    and the voxel occupancy vpl.visibility=cascade marches\n");
+        if (settings.voxel.occupancyResolution > 0) {
+            std::printf("    and the voxel occupancy vpl.visibility=cascade marches, %d^3 "
+                        "(voxel.occupancy_resolution)\n",
+                    settings.voxel.occupancyResolution);
+        } else {
+            std::printf("    and the voxel occupancy vpl.visibility=cascade marches\n");
+        }
     } else if (settings.vpl.visibility == VPL_VISIBILITY_SVO) {
         std::printf("    and the sparse voxel octree, at most vpl.svo_budget_mb = %d MiB of nodes\n",
                 settings.vpl.svoBudgetMb);

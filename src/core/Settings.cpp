@@ -34,6 +34,26 @@ SettingSpec intSetting(std::string key, std::string help, int min, int max, Acce
             }};
 }
 
+// An int setting that is 0 (follow another setting) or a power of two in [min, max].
+template <class Access>
+SettingSpec powerOfTwoOrZeroSetting(std::string key, std::string help, int min, int max,
+        Access access) {
+    SettingSpec spec = intSetting(std::move(key), std::move(help), 0, max, access);
+    spec.set = [parse = spec.set, access, min](Settings& s, const std::string& text,
+                       std::string& error) {
+        Settings parsed = s;
+        if (!parse(parsed, text, error)) return false;
+        const int value = access(parsed);
+        if (value != 0 && (value < min || (value & (value - 1)) != 0)) {
+            error = text + " is neither 0 nor a power of two from " + std::to_string(min);
+            return false;
+        }
+        access(s) = value;
+        return true;
+    };
+    return spec;
+}
+
 template <class Access>
 SettingSpec floatSetting(std::string key, std::string help, float min, float max, Access access) {
     return {std::move(key), std::move(help) + " [" + formatFloat(min) + ".." + formatFloat(max) + "]",
@@ -160,6 +180,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 1, 16, [](Settings& s) -> int& { return s.giBounces; }),
         intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
                 [](Settings& s) -> int& { return s.voxel.resolution; }),
+        powerOfTwoOrZeroSetting("voxel.occupancy_resolution",
+                "voxels per axis of the occupancy that atlas.visibility=voxel, "
+                "vpl.visibility=cascade and shadow.method=voxel march (power of two; 0 = "
+                "voxel.resolution)",
+                4, 256, [](Settings& s) -> int& { return s.voxel.occupancyResolution; }),
         intSetting("voxel.cascades",
                 "nested cascade levels, each doubling the edge (fixed plan)", 1, 8,
                 [](Settings& s) -> int& { return s.voxel.levels; }),

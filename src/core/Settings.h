@@ -31,6 +31,9 @@ struct LineSpaceSettings {
 // Voxel cone tracing (SEEDS.md section 1); defaults are the thesis' reference settings.
 struct VoxelSettings {
     int resolution = 32;          // voxel.resolution: v, voxels per axis of every cascade level
+    int occupancyResolution = 0;  // voxel.occupancy_resolution: voxels per axis of the occupancy
+                                  // the atlas' and VPLs' visibility and voxel shadows march;
+                                  // 0 = voxel.resolution
     int levels = 3;               // voxel.cascades: l, nested levels, each twice the previous edge
     int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
     bool rasterPerLevel = false;  // voxel.raster_per_level: each level rasterized over its

@@ -86,6 +86,9 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
     occupancySettings.voxel.coverageMaxAxis = true;
     // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
     if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
+    if (mSettings.voxel.occupancyResolution > 0) {
+        occupancySettings.voxel.resolution = mSettings.voxel.occupancyResolution;
+    }
     // Shadow cones widen towards an area light: the coarser levels (the same scene at 2x and
     // 4x the voxel) are their pre-filtered footprints. No more: the scene is all in the finest
     // level, and the voxelization raster spans the coarsest, so each level more halves the

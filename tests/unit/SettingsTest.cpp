@@ -83,6 +83,13 @@ TEST(Settings, AppliesAndValidates) {
     EXPECT_TRUE(applySetting(settings, "gl.debug=on", error));
     EXPECT_TRUE(settings.glDebug);
     EXPECT_FALSE(applySetting(settings, "gl.debug=maybe", error));
+    EXPECT_TRUE(applySetting(settings, "voxel.occupancy_resolution=64", error)) << error;
+    EXPECT_EQ(settings.voxel.occupancyResolution, 64);
+    EXPECT_FALSE(applySetting(settings, "voxel.occupancy_resolution=48", error));
+    EXPECT_NE(error.find("power of two"), std::string::npos) << error;
+    EXPECT_FALSE(applySetting(settings, "voxel.occupancy_resolution=2", error));
+    EXPECT_EQ(settings.voxel.occupancyResolution, 64) << "a rejected value must not change it";
+    EXPECT_TRUE(applySetting(settings, "voxel.occupancy_resolution=0", error)) << error;
 }
 
 TEST(Settings, HelpListsEveryKey) {
