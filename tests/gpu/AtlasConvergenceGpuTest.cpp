@@ -10,9 +10,10 @@ namespace {
 
 // Mean E_ind over the Cornell floor's texels after `frames` frames of `samples` each.
 glm::dvec3 floorMean(const scene::Scene& scene, int samples, int frames,
-        int visibility = ATLAS_VISIBILITY_NONE) {
+        int visibility = ATLAS_VISIBILITY_NONE, int occupancyResolution = 0) {
     Settings settings = atlasSettings(256, samples);
     settings.atlas.visibility = visibility;
+    settings.voxel.occupancyResolution = occupancyResolution;
     settings.atlas.progressive = frames > 1;
     settings.atlas.rotate = frames > 1;
     settings.atlas.targetSamples = samples * frames;
@@ -80,6 +81,16 @@ TEST_F(AtlasGpuTest, OneLargeSetWithVisibilityCountsEverySample) {
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(large[c], small[c], 0.01 * small[c]) << "channel " << c;
     }
+}
+
+// voxel.occupancy_resolution reaches the march: the same senders through an occupancy of
+// 64^3 instead of the plan's 32^3 light the floor more, since the blocks' rim voxels, which
+// block segments passing beside the blocks, shrink (measured on llvmpipe: +2.0 % red).
+TEST_F(AtlasGpuTest, FinerOccupancyBlocksLessOfTheFloorsLight) {
+    const scene::Scene scene = loadCornellBox();
+    const glm::dvec3 plan = floorMean(scene, 250, 1, ATLAS_VISIBILITY_VOXEL);
+    const glm::dvec3 finer = floorMean(scene, 250, 1, ATLAS_VISIBILITY_VOXEL, 64);
+    for (int c = 0; c < 3; ++c) EXPECT_GT(finer[c], 1.004 * plan[c]) << "channel " << c;
 }
 
 // Progressive mode adds one rotated set per frame until the target, then stops; new lights
