@@ -5,8 +5,9 @@
 // gutter keeps two charts' dilations apart. The back sides' sums (atlas.dilation.y = 1) are
 // dilated the same way into their own layer.
 // With atlas.filter (atlas.dilation.z = 1) a written texel takes the tent-weighted mean of the
-// written texels of its 3x3 block that lie on its own surface: the same facing (normals within
-// 18 degrees), its plane (within a fifth of a texel edge) and adjacent (within two edges).
+// written texels of its 3x3 block that lie on its own surface (surface_mask.frag): the same
+// facing (normals within 18 degrees), its plane (within a fifth of a texel edge) and adjacent
+// (within two edges).
 // A receiver near a concave edge draws the adjacent face's nearby texels rarely, so its
 // estimate is usually too dark and now and then far too bright; its neighbours draw their own
 // senders, and the tent-weighted mean keeps about a seventh of their variance. Light that
@@ -15,32 +16,20 @@
 
 layout(binding = BIND_TEX_ATLAS_SUMS) uniform sampler2D atlasSums;
 layout(binding = BIND_TEX_ATLAS_SUMS_BACK) uniform sampler2D atlasSumsBack;
-layout(binding = BIND_TEX_ATLAS_NORMAL) uniform sampler2D atlasNormal;
-layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
+layout(binding = BIND_TEX_ATLAS_SURFACE_MASK) uniform usampler2D atlasSurfaceMask;
 
 layout(location = 0) out vec4 outLit;
 layout(location = 1) out vec4 outLitBack;
 
 // The tent weights of the written texels of texel's 3x3 block on its own surface (the centre
 // weighs 4 whatever its area, edge neighbours 2, corners 1; 0 off the surface), in row order.
+// Which neighbours lie on the surface was drawn with the G-buffer (surface_mask.frag).
 void surfaceWeights(ivec2 texel, out float weights[9]) {
-    vec4 p = texelFetch(atlasPosition, texel, 0);
-    vec3 n = texelFetch(atlasNormal, texel, 0).xyz;
-    ivec2 maxTexel = ivec2(atlas.size.x - 1);
+    uint mask = texelFetch(atlasSurfaceMask, texel, 0).r;
     for (int i = 0; i < 9; ++i) {
         ivec2 offset = ivec2(i % 3 - 1, i / 3 - 1);
-        ivec2 q = texel + offset;
-        weights[i] = i == 4 ? 4.0 : 0.0;
-        if (i == 4 || any(lessThan(q, ivec2(0))) || any(greaterThan(q, maxTexel))) continue;
-        vec4 pq = texelFetch(atlasPosition, q, 0);
-        if (pq.w <= 0.0) continue;
-        vec3 d = pq.xyz - p.xyz;
-        // A texel on a chart's border stands for part of its square (its w): the larger of
-        // the two areas gives the texel edge.
-        float edge = sqrt(max(p.w, pq.w));
-        bool onSurface = dot(texelFetch(atlasNormal, q, 0).xyz, n) >= 0.95 &&
-                abs(dot(d, n)) <= 0.2 * edge && dot(d, d) <= 4.0 * edge * edge;
-        if (onSurface) weights[i] = float(4 >> (abs(offset.x) + abs(offset.y)));
+        bool onSurface = i != 4 && (mask & (1u << uint(i < 4 ? i : i - 1))) != 0u;
+        weights[i] = i == 4 ? 4.0 : onSurface ? float(4 >> (abs(offset.x) + abs(offset.y))) : 0.0;
     }
 }
 

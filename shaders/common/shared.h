@@ -97,10 +97,13 @@
                                         // w = distance along the view axis (m), 0 = empty
 #define BIND_TEX_VPL_NORMAL         9   // rgba16f camera G-buffer: xyz = unit normal facing
                                         // the eye, w = 1 where a surface is
-#define BIND_TEX_VPL_GATHERED       10  // rgba16f, E_ind of each pixel's VPL subset (x tiles^2)
+#define BIND_TEX_VPL_GATHERED       10  // rgba32f, E_ind of each pixel's VPL subset (x tiles^2)
 #define BIND_TEX_ATLAS_DIRECT_BACK  15
 #define BIND_TEX_ATLAS_SUMS_BACK    16
 #define BIND_TEX_ATLAS_LIT_BACK     17
+#define BIND_TEX_ATLAS_SURFACE_MASK 25  // r8ui, bit i set when neighbour i of the texel's 3x3
+                                        // block (row order, the centre left out) lies on the
+                                        // texel's own surface (atlas/surface_mask.frag)
 
 // The temporal filter of the indirect irradiance (render/TemporalFilter.h).
 #define BIND_TEX_TEMPORAL_CURRENT   18  // rgba16f, this frame's E_ind, a = view depth (m)

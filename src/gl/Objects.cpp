@@ -21,7 +21,7 @@ void recordTexture(GLuint id, const char* name, GLenum internalFormat, glm::ivec
 
 std::size_t bytesPerTexel(GLenum internalFormat) {
     switch (internalFormat) {
-    case GL_R8: return 1;
+    case GL_R8: case GL_R8UI: return 1;
     case GL_RG8: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
     case GL_RGBA8: case GL_RGBA8_SNORM: case GL_SRGB8_ALPHA8: case GL_R32UI: case GL_R32F: case GL_RG16F:
     case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32F: case GL_DEPTH24_STENCIL8:

@@ -237,6 +237,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     if (plan.drawGBuffer) {
         mGBuffer.execute({in.scene, mGeometry, in.shadows, in.frameUniforms, mUniforms},
                 {mTextures}, profiler);
+        if (mSettings.filter) mDilate.drawSurfaceMask({mTextures, mUniforms}, profiler);
     }
     if (plan.gather) {
         if (plan.restart) mGather.clear();

@@ -7,7 +7,7 @@ namespace {
 
 constexpr GLenum kDirectFormat = GL_RGBA16F, kNormalFormat = GL_RGBA16F,
                  kPositionFormat = GL_RGBA32F, kAlbedoFormat = GL_RGBA16F, kSumsFormat = GL_RGBA32F,
-                 kLitFormat = GL_RGBA16F;
+                 kLitFormat = GL_RGBA16F, kSurfaceMaskFormat = GL_R8UI;
 
 gl::Texture layer(GLenum format, int resolution, GLenum filter, const char* label) {
     gl::Texture texture = gl::createTexture2D(format, {resolution, resolution}, 1, label);
@@ -29,6 +29,7 @@ void AtlasTextures::allocate(int size, bool withBackSides, int bounceCount) {
     albedo = layer(kAlbedoFormat, size, GL_NEAREST, "atlas/albedo");
     sums = layer(kSumsFormat, size, GL_NEAREST, "atlas/sums");
     lit = layer(kLitFormat, size, GL_LINEAR, "atlas/lit");
+    surfaceMask = layer(kSurfaceMaskFormat, size, GL_NEAREST, "atlas/surface_mask");
     const int back = withBackSides ? size : 1;
     directBack = layer(kDirectFormat, back, GL_NEAREST, "atlas/back/direct");
     sumsBack = layer(kSumsFormat, back, GL_NEAREST, "atlas/back/sums");
@@ -55,6 +56,7 @@ std::vector<gl::MemoryItem> AtlasTextures::memoryFor(int resolution, bool backSi
             {"atlas/albedo", gl::textureBytes(kAlbedoFormat, size, 1)},
             {"atlas/sums", gl::textureBytes(kSumsFormat, size, 1)},
             {"atlas/lit", gl::textureBytes(kLitFormat, size, 1)},
+            {"atlas/surface_mask", gl::textureBytes(kSurfaceMaskFormat, size, 1)},
             {"atlas/back/direct", gl::textureBytes(kDirectFormat, back, 1)},
             {"atlas/back/sums", gl::textureBytes(kSumsFormat, back, 1)},
             {"atlas/back/lit", gl::textureBytes(kLitFormat, back, 1)}};

@@ -28,6 +28,8 @@ struct AtlasTextures {
     gl::Texture albedo;   // RGBA16F: rgb = rho, a = coverage
     gl::Texture sums;     // RGBA32F: gather sums over all sample sets, a = receiver written
     gl::Texture lit;      // RGBA16F: rgb = E_ind (W/m^2) dilated into the gutters
+    gl::Texture surfaceMask; // R8UI: which neighbours lie on the texel's surface (atlas.filter),
+                             // drawn with the G-buffer
     gl::Texture directBack, sumsBack, litBack; // the same for the back of double-sided texels
     // gi.bounces > 1 only (else 1 x 1): what the further gathers' senders send,
     // RGBA16F: rgb = direct + rho/pi x the previous bounce's E_ind (W/(m^2 sr)), a = direct.a
