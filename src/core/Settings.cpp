@@ -34,18 +34,26 @@ SettingSpec intSetting(std::string key, std::string help, int min, int max, Acce
             }};
 }
 
-// An int setting that is 0 (follow another setting) or a power of two in [min, max].
+// An int setting that is a power of two in [min, max], or also 0 (follow another setting)
+// when `zero` says so.
+enum class Zero { Refused, Allowed };
 template <class Access>
-SettingSpec powerOfTwoOrZeroSetting(std::string key, std::string help, int min, int max,
+SettingSpec powerOfTwoSetting(std::string key, std::string help, int min, int max, Zero zero,
         Access access) {
-    SettingSpec spec = intSetting(std::move(key), std::move(help), 0, max, access);
-    spec.set = [parse = spec.set, access, min](Settings& s, const std::string& text,
+    SettingSpec spec = intSetting(std::move(key), std::move(help),
+            zero == Zero::Allowed ? 0 : min, max, access);
+    spec.set = [parse = spec.set, access, min, zero](Settings& s, const std::string& text,
                        std::string& error) {
         Settings parsed = s;
         if (!parse(parsed, text, error)) return false;
         const int value = access(parsed);
-        if (value != 0 && (value < min || (value & (value - 1)) != 0)) {
-            error = text + " is neither 0 nor a power of two from " + std::to_string(min);
+        if (value == 0 && zero == Zero::Allowed) {
+            access(s) = value;
+            return true;
+        }
+        if (value < min || (value & (value - 1)) != 0) {
+            error = text + " is not a power of two from " + std::to_string(min) +
+                    (zero == Zero::Allowed ? " (or 0)" : "");
             return false;
         }
         access(s) = value;
@@ -178,13 +186,14 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "bounces of indirect light in voxel and atlas GI: 1 = light reflected once (the "
                 "thesis), each more gathers the last bounce's light again",
                 1, 16, [](Settings& s) -> int& { return s.giBounces; }),
-        intSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)", 4, 256,
-                [](Settings& s) -> int& { return s.voxel.resolution; }),
-        powerOfTwoOrZeroSetting("voxel.occupancy_resolution",
+        powerOfTwoSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)",
+                4, 256, Zero::Refused, [](Settings& s) -> int& { return s.voxel.resolution; }),
+        powerOfTwoSetting("voxel.occupancy_resolution",
                 "voxels per axis of the occupancy that atlas.visibility=voxel, "
                 "vpl.visibility=cascade and shadow.method=voxel march (power of two; 0 = "
                 "voxel.resolution)",
-                4, 256, [](Settings& s) -> int& { return s.voxel.occupancyResolution; }),
+                4, 256, Zero::Allowed,
+                [](Settings& s) -> int& { return s.voxel.occupancyResolution; }),
         intSetting("voxel.cascades",
                 "nested cascade levels, each doubling the edge (fixed plan)", 1, 8,
                 [](Settings& s) -> int& { return s.voxel.levels; }),
@@ -291,9 +300,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 1e12f, [](Settings& s) -> float& { return s.vpl.clamp; }),
         choiceSetting("vpl.visibility", "occlusion between shading points and VPLs",
                 {"none", "cascade", "svo"}, [](Settings& s) -> int& { return s.vpl.visibility; }),
-        intSetting("vpl.svo_resolution",
+        powerOfTwoSetting("vpl.svo_resolution",
                 "leaf voxels per side of the sparse voxel octree over the scene (power of two)",
-                16, 1024, [](Settings& s) -> int& { return s.vpl.svoResolution; }),
+                16, 1024, Zero::Refused, [](Settings& s) -> int& { return s.vpl.svoResolution; }),
         intSetting("vpl.svo_budget_mb", "most memory the sparse voxel octree's nodes may take, MiB",
                 1, 4096, [](Settings& s) -> int& { return s.vpl.svoBudgetMb; }),
         boolSetting("vpl.interleave", "4x4 interleaved VPL subsets merged by a geometry-aware filter",

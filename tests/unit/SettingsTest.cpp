@@ -90,6 +90,13 @@ TEST(Settings, AppliesAndValidates) {
     EXPECT_FALSE(applySetting(settings, "voxel.occupancy_resolution=2", error));
     EXPECT_EQ(settings.voxel.occupancyResolution, 64) << "a rejected value must not change it";
     EXPECT_TRUE(applySetting(settings, "voxel.occupancy_resolution=0", error)) << error;
+    // Nested cascade levels share 2x2x2 voxel blocks, octree levels halve: refused in any mode.
+    EXPECT_FALSE(applySetting(settings, "voxel.resolution=48", error));
+    EXPECT_NE(error.find("power of two"), std::string::npos) << error;
+    EXPECT_FALSE(applySetting(settings, "voxel.resolution=0", error));
+    EXPECT_TRUE(applySetting(settings, "voxel.resolution=64", error)) << error;
+    EXPECT_FALSE(applySetting(settings, "vpl.svo_resolution=100", error));
+    EXPECT_TRUE(applySetting(settings, "vpl.svo_resolution=256", error)) << error;
 }
 
 TEST(Settings, HelpListsEveryKey) {
