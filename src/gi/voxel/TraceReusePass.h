@@ -40,6 +40,8 @@ public:
     bool init(gl::ShaderLibrary& shaders, std::string& error);
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
     [[nodiscard]] bool hasHistory() const { return mHasHistory; }
+    // The next frame starts without history (it traces every pixel).
+    void dropHistory() { mHasHistory = false; }
 
     const gl::Texture& result() const { return mResult[1 - mCurrent]; }
     glm::ivec2 size() const { return mSize; }

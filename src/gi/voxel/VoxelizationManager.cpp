@@ -73,10 +73,15 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 "irradiance a further bounce could add to";
         return false;
     }
-    if (!mConfigured || !(s == mSettings) || settings.giBounces != mBounces) {
+    // Which pixels a frame traces (voxel.trace_reuse) leaves the voxels as they are: switching
+    // it only starts the reuse over.
+    VoxelSettings sameVoxels = s;
+    sameVoxels.traceReuse = mSettings.traceReuse;
+    if (!mConfigured || !(sameVoxels == mSettings) || settings.giBounces != mBounces) {
         mContent = Content::None;
         mStaticCacheValid = false;
     }
+    if (mConfigured && s.traceReuse != mSettings.traceReuse) mReuse.dropHistory();
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
                             s.levels != mSettings.levels || s.anisotropic != mSettings.anisotropic ||
                             (settings.giBounces > 1) != (mBounces > 1);
