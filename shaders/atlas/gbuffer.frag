@@ -2,12 +2,13 @@
 // surface, writing five layers (shared.h, BIND_TEX_ATLAS_*):
 //   direct      the surface's outgoing direct radiance L = rho/pi * E + L_emitted on the side
 //               the normal points to, E summed over every light with the forward pass's
-//               conventions and shadow maps (Lambert only; the specular term is not part of
-//               what a diffuse surface sends on),
+//               conventions and shadow maps, rho what the surface sends on of each light
+//               (reflectance.glsl: the base colour, or the glTF BRDF's albedo for the
+//               light's direction), sent on as diffuse light,
 //   direct back the same on the other side for double-sided materials (0 for single-sided),
 //   normal      unit normal, w = 1 for double-sided materials,
 //   position    world position; w = 0 (the SAMPLE_AREA draw adds the area, below),
-//   albedo      rho.
+//   albedo      rho of light from every direction alike (what further bounces reflect).
 // The two sides of a double-sided surface are lit separately, each only by the lights in
 // front of it, and both emit, as the path tracer shades them (its normal faces the ray).
 // SAMPLE_AREA (a third draw, conservative, additive blending into position.w only): each
@@ -18,6 +19,7 @@
 #include "../common/frame.glsl"
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
+#include "../common/reflectance.glsl"
 #include "../common/shadows.glsl"
 #include "atlas_vertex.glsl"
 
@@ -106,8 +108,10 @@ void main() {
 
 #else
 
-// Direct irradiance on the side facing n.
-vec3 irradiance(vec3 n) {
+// rho E: the direct irradiance on the side facing n, each light's times what the surface
+// reflects of it.
+vec3 reflectedIrradiance(GpuMaterial m, vec3 baseColor, vec3 n) {
+    bool gltf = shadingModel() == SHADING_GLTF;
     vec3 e = vec3(0.0);
     for (int i = 0; i < frame.counts.x; ++i) {
         vec3 li = lightIrradiance(lights[i], vin.position, n);
@@ -116,7 +120,7 @@ vec3 irradiance(vec3 n) {
         float distance;
         lightDirection(lights[i], vin.position, toLight, distance);
         if (shadowsApplied()) li *= shadowVisibility(i, vin.position, n, distance);
-        e += li;
+        e += li * reflectanceOfLight(m, baseColor, dot(n, toLight), gltf);
     }
     return e;
 }
@@ -138,12 +142,12 @@ void main() {
     // Senders' emission is gathered as light, except where it already arrives as an area
     // light's direct light.
     vec3 emission = materialEmitsAsLight(m) ? vec3(0.0) : materialEmission(m, vin.texcoord0);
-    outDirect = vec4(baseColor.rgb / PI * irradiance(n) + emission, 1.0);
-    outDirectBack = doubleSided ? vec4(baseColor.rgb / PI * irradiance(-n) + emission, 1.0)
+    outDirect = vec4(reflectedIrradiance(m, baseColor.rgb, n) / PI + emission, 1.0);
+    outDirectBack = doubleSided ? vec4(reflectedIrradiance(m, baseColor.rgb, -n) / PI + emission, 1.0)
                                 : vec4(0.0);
     outNormal = vec4(n, doubleSided ? 1.0 : 0.0);
     outPosition = vec4(vin.position, 0.0);
-    outAlbedo = vec4(baseColor.rgb, 1.0);
+    outAlbedo = vec4(reflectanceOfUniformLight(m, baseColor.rgb, shadingModel() == SHADING_GLTF), 1.0);
 }
 
 #endif

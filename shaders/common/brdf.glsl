@@ -90,6 +90,23 @@ vec3 diffuseIndirectWeight(GltfSurface s, float cosV) {
     return s.diffuse * (1.0 - s.f0) * (1.0 - k);
 }
 
+// What the surface reflects, into the whole hemisphere, of light arriving at cosine cosL to its
+// normal: by reciprocity the directional albedo seen from there, diffuse and specular lobes
+// together (a metal's highlight and a dielectric's sheen leave the surface as light too, and
+// the Fresnel factor takes away from the diffuse part; reflectance.glsl).
+vec3 directionalAlbedo(GltfSurface s, float cosL) {
+    return diffuseIndirectWeight(s, cosL) + specularAlbedo(s, cosL);
+}
+
+// directionalAlbedo under uniform light (the white-sky albedo): the share of irradiance from
+// every direction alike the surface reflects.
+vec3 uniformLightAlbedo(GltfSurface s) {
+    float p = s.roughness * float(kEnvBrdfSteps - 1);
+    int i = min(int(p), kEnvBrdfSteps - 2);
+    vec2 ab = mix(kEnvBrdfUniform[i], kEnvBrdfUniform[i + 1], p - float(i));
+    return s.diffuse * (1.0 - s.f0) * (1.0 - kDiffuseFresnelUniform) + s.f0 * ab.x + ab.y;
+}
+
 // Where the specular lobe of a rough surface points: between the mirror direction and the
 // normal, as G and the lobe's foreshortening pull it (Frostbite's fit).
 vec3 specularDominantDirection(GltfSurface s, vec3 n, vec3 v) {

@@ -27,4 +27,10 @@ const vec2 kEnvBrdf[256] = vec2[](
 const float kDiffuseFresnel[16] = float[](
     0.02670, 0.02330, 0.01902, 0.01537, 0.01227, 0.00968, 0.00751, 0.00573, 0.00428, 0.00312, 0.00219, 0.00148, 0.00094, 0.00054, 0.00026, 0.00008);
 
+// Under uniform light (cosine-weighted means over n.v): (A, B) per roughness step,
+// and K.
+const vec2 kEnvBrdfUniform[16] = vec2[](
+    vec2(0.9518, 0.0482), vec2(0.9518, 0.0481), vec2(0.9517, 0.0468), vec2(0.9504, 0.0435), vec2(0.9455, 0.0386), vec2(0.9342, 0.0327), vec2(0.9142, 0.0267), vec2(0.8839, 0.0213), vec2(0.8427, 0.0166), vec2(0.7917, 0.0128), vec2(0.7326, 0.0098), vec2(0.6677, 0.0076), vec2(0.5999, 0.0058), vec2(0.5324, 0.0045), vec2(0.4675, 0.0035), vec2(0.4070, 0.0028));
+const float kDiffuseFresnelUniform = 0.00371;
+
 #endif

@@ -270,6 +270,8 @@
                                         // sky directions [z, w) this gather draw adds
 #define LOC_VPL_GATHER_RANGE        35  // ivec3, xy = the VPLs [x, y) of each pixel's subset this
                                         // dispatch adds, z = 1 on the last dispatch
+#define LOC_RSM_GLTF                36  // int, 1 when surfaces reflect with the glTF BRDF's
+                                        // albedos (reflectance.glsl)
 
 // llvmpipe (Mesa's gallivm) ends every loop of a shader invocation, silently, once all of its
 // loops together have run this many iterations (LP_MAX_TGSI_LOOP_ITERATIONS): a gather whose
@@ -398,7 +400,9 @@ struct VoxelUniforms {                  // std140
                                         // ring cone, z = cos of ring angle, w = sin of it
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
                                         // fragment is discarded, yzw = unused
-    vec4 modes;                         // x = INJECT_* weighting, y = unused,
+    vec4 modes;                         // x = INJECT_* weighting, y = 1 when surfaces
+                                        // reflect with the glTF BRDF's albedos
+                                        // (voxel_reflectance.glsl),
                                         // z = 1 for max-axis coverage in
                                         // propagation, w = 1 when cone tracing takes a
                                         // coarser level's unit normal for one plane

@@ -1,6 +1,8 @@
 // Light injection, fragment stage (thesis 4.3.3.2, Alg. 3): every surface fragment the light
-// sees computes its Lambert irradiance E from this light (DESIGN.md conventions) and adds it
-// to the finest voxel containing it, under the voxel's spinlock. The early depth test against
+// sees computes its Lambert irradiance E from this light (DESIGN.md conventions; with the glTF
+// model scaled so the voxel's albedo reflects what the surface's BRDF does of this light,
+// voxel_reflectance.glsl) and adds it to the finest voxel containing it, under the voxel's
+// spinlock. The early depth test against
 // the depth pre-pass keeps fragments the light does not see from writing anything.
 //
 // INJECT_FRAGMENT (the thesis): the voxel keeps the mean E over this light's fragments.
@@ -23,6 +25,7 @@ layout(early_fragment_tests) in;
 #include "../common/vertex_data.glsl"
 #include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
+#include "voxel_reflectance.glsl"
 
 layout(location = LOC_INJECT_AXIS) uniform vec4 viewAxis;   // w = 1: orthographic
 layout(location = LOC_INJECT_FOOTPRINT) uniform float pixelFootprint;
@@ -44,6 +47,8 @@ void main() {
     lightDirection(light, vin.position, toLight, distance);
     if (dot(n, toLight) < 0.0) n = -n;
     vec3 e = lightIrradiance(light, vin.position, n);
+    e *= injectedIrradianceScale(m, materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color).rgb,
+            dot(n, toLight));
     if (max(e.r, max(e.g, e.b)) <= voxel.injection.x) discard;
     int level = finestLevel(vin.position);
     if (level < 0) discard;

@@ -11,6 +11,7 @@
 #include "../common/voxel_cascade.glsl"
 #include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
+#include "voxel_reflectance.glsl"
 
 layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) coherent uniform image3D voxelAlbedo;
 layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) coherent uniform image3D voxelNormal;
@@ -26,6 +27,7 @@ void main() {
     GpuMaterial m = materials[drawMaterial];
     vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
     if (materialCutOut(m, baseColor.a)) discard;
+    vec3 reflectance = voxelReflectance(m, baseColor.rgb);
     // With a raster per level (voxelize.geom), a fragment in a finer level's region is that
     // level's.
     int level = finestLevel(vin.position);
@@ -44,7 +46,7 @@ void main() {
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);
-        imageStore(voxelAlbedo, texel, roundToHalf(keep * albedo + add * vec4(baseColor.rgb, 1.0), dither));
+        imageStore(voxelAlbedo, texel, roundToHalf(keep * albedo + add * vec4(reflectance, 1.0), dither));
         imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, planeOffset), dither));
         vec4 irradiance = imageLoad(voxelIrradiance, texel);
         imageStore(voxelIrradiance, texel, roundToHalf(vec4(irradiance.rgb, irradiance.a + area), dither));

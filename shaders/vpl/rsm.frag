@@ -8,9 +8,12 @@
 // angle), so the pixels of six faces hold rho times the light's whole power. The flux
 // target's alpha keeps A: the lit area sets the clamp's scale (VplGi.h). Area lights are
 // seen from their centre, E being the emitters' exact irradiance (lighting.glsl): the texels'
-// flux sums to the reflected power as the direct pass lights it.
+// flux sums to the reflected power as the direct pass lights it. rho is what the surface sends
+// on of the light (reflectance.glsl): the base colour, or with the glTF model its BRDF's
+// albedo for the light's direction.
 #include "../common/lighting.glsl"
 #include "../common/material.glsl"
+#include "../common/reflectance.glsl"
 #include "../common/vertex_data.glsl"
 
 layout(early_fragment_tests) in;
@@ -18,6 +21,7 @@ layout(early_fragment_tests) in;
 layout(location = LOC_RSM_AXIS) uniform vec4 viewAxis;   // w = 1: orthographic
 layout(location = LOC_RSM_FOOTPRINT) uniform float pixelFootprint;
 layout(location = LOC_RSM_LIGHT) uniform int lightIndex;
+layout(location = LOC_RSM_GLTF) uniform int gltfReflectance;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -46,5 +50,6 @@ void main() {
     }
     outPosition = vec4(vin.position, 1.0);
     outNormal = vec4(n, 1.0);
-    outFlux = vec4(baseColor.rgb * e * area, area);
+    vec3 reflectance = reflectanceOfLight(m, baseColor.rgb, dot(n, toLight), gltfReflectance != 0);
+    outFlux = vec4(reflectance * e * area, area);
 }

@@ -151,7 +151,8 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "material.specular in the GPU's direct light only (the path tracer stays "
                 "Lambertian); gltf = glTF metallic-roughness (Lambert x (1 - metallic) + GGX) in "
                 "the path tracer and on the GPU: direct light in every mode, a specular cone in "
-                "voxel GI (the atlas and VPL indirect light stay diffuse)",
+                "voxel GI; every GI mode's surfaces send on what the glTF BRDF reflects (the atlas and "
+                "VPL GI reflect only the diffuse term of what they gather)",
                 {"phong", "gltf"}, [](Settings& s) -> int& { return s.materialModel; }),
         floatSetting("material.specular",
                 "Blinn-Phong specular strength ks; 0 = Lambert only in every model and mode (the "

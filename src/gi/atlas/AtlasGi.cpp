@@ -125,7 +125,8 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     const bool resample = !mConfigured || s.samples != mSettings.samples;
     const bool relayer = !mConfigured || settings.giBounces != mBounces;
     const bool changed = !mConfigured || !(s == mSettings) ||
-                         !(settings.shadow == mShadowSettings) || relayer;
+                         !(settings.shadow == mShadowSettings) || relayer ||
+                         settings.glossyMaterials() != mGlossyMaterials;
     const AtlasSettings previous = mSettings;
     const int previousBounces = mBounces;
     mSettings = s;
@@ -142,6 +143,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         glTextureSubImage2D(mSamples.id(), 0, 0, 0, s.samples, 1, GL_RG, GL_FLOAT, points.data());
     }
     mShadowSettings = settings.shadow;
+    mGlossyMaterials = settings.glossyMaterials();
     mConfigured = true;
     if (changed) {
         mContent.gBufferValid = false;

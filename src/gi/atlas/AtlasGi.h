@@ -94,6 +94,8 @@ private:
     AtlasSettings mSettings;
     ShadowSettings mShadowSettings;
     int mBounces = 1;                  // gi.bounces
+    bool mGlossyMaterials = false;     // material.model=gltf: the G-buffer's light and albedo
+                                       // are what the glTF BRDF reflects
     bool mConfigured = false;
 
     AtlasGeometry mGeometry;

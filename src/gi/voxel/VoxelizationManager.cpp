@@ -77,7 +77,8 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
     // it only starts the reuse over.
     VoxelSettings sameVoxels = s;
     sameVoxels.traceReuse = mSettings.traceReuse;
-    if (!mConfigured || !(sameVoxels == mSettings) || settings.giBounces != mBounces) {
+    if (!mConfigured || !(sameVoxels == mSettings) || settings.giBounces != mBounces ||
+            settings.glossyMaterials() != mGlossyMaterials) {
         mContent = Content::None;
         mStaticCacheValid = false;
     }
@@ -90,7 +91,7 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                          s.clampCentre != mSettings.clampCentre;
     mSettings = s;
     mBounces = settings.giBounces;
-    mSpecularCone = settings.glossyMaterials();
+    mGlossyMaterials = settings.glossyMaterials();
     mConfigured = true;
     if (reallocate) mTextures.allocate(s.resolution, s.levels, s.anisotropic, mBounces > 1);
     if (replace) mFinestExtent = s.extent;
@@ -130,7 +131,7 @@ void VoxelizationManager::writeUniforms() {
     u.raster = glm::vec4(mSettings.rasterPerLevel ? 1.0f : 0.0f, rasterPixel * rasterPixel, 0.0f,
             0.0f);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
-            0.0f, mSettings.coverageMaxAxis ? 1.0f : 0.0f,
+            mGlossyMaterials ? 1.0f : 0.0f, mSettings.coverageMaxAxis ? 1.0f : 0.0f,
             mSettings.coarsePlanes ? 1.0f : 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
@@ -251,14 +252,14 @@ void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profil
     glm::ivec2 traceSize = glm::max(
             glm::ivec2(glm::round(glm::vec2(in.outputSize) * mSettings.traceScale)), glm::ivec2(1));
     const ConeTracePass::Inputs traceInputs{in.scene, in.frameUniforms, mUniforms, mTextures,
-            mSpecularCone};
+            mGlossyMaterials};
     if (mSettings.traceReuse) {
         traceSize = (traceSize + 1) / 2 * 2;
         // A frame whose voxels were lit anew traces every pixel, so a changed scene never
         // shows light from before the change; while the light stands still, a quarter.
         // The specular cone's light depends on the view, which reprojection cannot carry: a
         // frame with it traces every pixel.
-        const bool reuse = !mSpecularCone && mReuse.hasHistory() &&
+        const bool reuse = !mGlossyMaterials && mReuse.hasHistory() &&
                            mReuse.size() == traceSize && mTracedContent == mContentVersion;
         // Diagonal neighbours first: two frames cover the blocks evenly.
         constexpr glm::ivec2 kPhases[4] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
@@ -293,7 +294,7 @@ GiOutputs VoxelizationManager::outputs() const {
     const gl::Texture& traced = mSettings.traceReuse ? mReuse.result() : mTrace.indirect();
     out.indirect = mSettings.filterRadius > 0 ? &mFilter.result() : &traced;
     out.size = mSettings.traceReuse ? mReuse.size() : mTrace.size();
-    out.indirectSpecular = mSpecularCone ? &mTrace.specular() : nullptr;
+    out.indirectSpecular = mGlossyMaterials ? &mTrace.specular() : nullptr;
     out.debugImage = mShowDebug ? &mDebugView.image() : nullptr;
     out.resampled = mPlacementMoved;
     return out;

@@ -73,7 +73,9 @@ private:
 
     VoxelSettings mSettings;
     int mBounces = 1;   // gi.bounces
-    bool mSpecularCone = false;   // material.model=gltf: ConeTracePass traces one more cone
+    // material.model=gltf: surfaces reflect with the glTF BRDF (voxel_reflectance.glsl) and
+    // ConeTracePass traces one more cone, the specular one.
+    bool mGlossyMaterials = false;
     bool mConfigured = false;
     scene::Aabb mSceneBounds;
     CascadeVolume mVolume;

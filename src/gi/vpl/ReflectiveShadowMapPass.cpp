@@ -82,7 +82,8 @@ void ReflectiveShadowMapPass::readBack(int light, std::vector<RsmTexel>& texels)
 }
 
 std::vector<RsmTexel> ReflectiveShadowMapPass::execute(const scene::GpuScene& scene,
-        const std::vector<scene::LightView>& views, int resolution, gl::GpuProfiler& profiler) {
+        const std::vector<scene::LightView>& views, int resolution, bool gltfReflectance,
+        gl::GpuProfiler& profiler) {
     std::vector<RsmTexel> texels;
     if (views.empty() || !allocate(resolution)) return texels;
     gl::GpuScope scope(profiler, "vpl/rsm");
@@ -93,6 +94,7 @@ std::vector<RsmTexel> ReflectiveShadowMapPass::execute(const scene::GpuScene& sc
     glDisable(GL_BLEND);
     scene.bindLights();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, scene.materialBuffer().id());
+    glProgramUniform1i(mProgram.id(), LOC_RSM_GLTF, gltfReflectance ? 1 : 0);
     for (const scene::LightView& view : views) {
         drawView(scene, view);
         readBack(view.light, texels);

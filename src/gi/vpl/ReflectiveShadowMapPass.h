@@ -21,9 +21,11 @@ namespace gi::vpl {
 class ReflectiveShadowMapPass {
 public:
     bool init(gl::ShaderLibrary& shaders, std::string& error);
-    // The lit texels of every view, in view order.
+    // The lit texels of every view, in view order; gltfReflectance: the flux a texel sends on
+    // is what the glTF BRDF reflects (material.model=gltf), else the base colour's share.
     [[nodiscard]] std::vector<RsmTexel> execute(const scene::GpuScene& scene,
-            const std::vector<scene::LightView>& views, int resolution, gl::GpuProfiler& profiler);
+            const std::vector<scene::LightView>& views, int resolution, bool gltfReflectance,
+            gl::GpuProfiler& profiler);
 
 private:
     bool allocate(int resolution);

@@ -58,9 +58,10 @@ bool VplGi::configure(const Settings& settings, std::string& error) {
     const VplSettings& s = settings.vpl;
     if (!SvoVisibility::validate(s, error)) return false;
     if (s.count != mSettings.count || s.rsmResolution != mSettings.rsmResolution ||
-            s.bounces != mSettings.bounces) {
+            s.bounces != mSettings.bounces || settings.glossyMaterials() != mGlossyMaterials) {
         mSource.valid = false;
     }
+    mGlossyMaterials = settings.glossyMaterials();
     if (s.visibility != mSettings.visibility) mWarnedNoOccupancy = false;
     mSettings = s;
     return true;
@@ -99,7 +100,7 @@ void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     // The RSM readback waits for the GPU, so wall clock measures its draws too.
     const auto rsmStart = std::chrono::steady_clock::now();
     const std::vector<RsmTexel> texels =
-            mRsm.execute(in.scene, views, mSettings.rsmResolution, profiler);
+            mRsm.execute(in.scene, views, mSettings.rsmResolution, mGlossyMaterials, profiler);
     mLastResampling.rsmMs = millisecondsSince(rsmStart);
     mLastResampling.rsmViews = int(views.size());
     mLastResampling.rsmTexels = texels.size();

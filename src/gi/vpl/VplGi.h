@@ -73,6 +73,7 @@ private:
     void writeUniforms(int visibility, int gatherOutput);
 
     VplSettings mSettings;
+    bool mGlossyMaterials = false;   // material.model=gltf: the RSM's flux is the glTF BRDF's
     float mLitAreaPerVpl = 0.0f;   // m^2, at the last resampling
     Source mSource;
     int mVplCount = 0;
