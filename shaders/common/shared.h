@@ -415,7 +415,10 @@ struct VoxelUniforms {                  // std140
                                         // its own extent, 0 for one raster over the
                                         // coarsest; y = 1 / voxel.multiplier^2, a raster
                                         // pixel's area in face areas of the voxels of the
-                                        // level rasterized; zw = unused
+                                        // level rasterized; z = 1 to sum the surfaces'
+                                        // area projected onto the x, y and z faces into
+                                        // irradiance.rgb (the visibility occupancy, which
+                                        // no light is injected into); w = unused
 };
 
 struct GpuShadow {                      // std430, one per light

@@ -8,7 +8,10 @@
 // coverage: a ray that grazes a wall within a voxel of it, as rays between neighbouring
 // receivers near a corner do, passes, and so does a ray passing a block's edge outside it.
 // Voxels of surfaces facing apart (both faces of a slab thinner than a voxel) and any voxel of
-// a coarser level, whose plane is an average of its children, block by their coverage alone.
+// a coarser level, whose plane is an average of its children, block by their coverage alone:
+// in the occupancy the marches walk (voxel.raster.z), the coverage across the segment's
+// direction (directionalCoverage); elsewhere the voxel's coverage, which an unlit voxel holds
+// as 1 wherever a surface touches it.
 // Both ends first leave their own surface by one voxel along its normal, and the voxels they
 // then start in do not block, so a surface never occludes itself (the segment shrunk at both
 // ends, epsilon exits against self-hits). Parts of the segment outside the cascade count as
@@ -23,6 +26,24 @@
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;
+layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelProjectedArea;
+
+// How much of a voxel of several surfaces a segment along dir meets, from the surfaces' area
+// projected onto the voxel's three faces (voxelize.frag), A_i, in face areas: the face the
+// segment runs most nearly across, i, sees the surfaces cover A_i of it, and a segment that
+// slants across that face by |d_i| / max|d| meets, of what the other faces see, no more than
+// that face does (a slab whose two faces lie in the voxel, A = (2, 0, 0), stops every segment
+// that crosses it, whatever the angle). A closed object (a column, a block) shows its front
+// and its back in each projection, and a segment that meets the one meets the other, so the
+// sums count it twice: halved (accuracy-analysis.md measures the choice).
+const float kClosedSurfaceProjection = 0.5;
+
+float directionalCoverage(ivec3 texel, vec3 dir) {
+    vec3 across = abs(dir);
+    vec3 seen = kClosedSurfaceProjection * texelFetch(voxelProjectedArea, texel, 0).rgb * across;
+    return clamp(max(seen.x, max(seen.y, seen.z)) / max(across.x, max(across.y, across.z)),
+            0.0, 1.0);
+}
 
 float endOffset(vec3 p) {
     int level = finestLevel(p);
@@ -66,10 +87,13 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
         bool endVoxel = i == 0 || exit >= len;
         if (coverage > 0.0 && !endVoxel) {
             vec4 plane = texelFetch(voxelPlane, texel, 0);
-            bool blocks = !voxelMetAtPlane(plane, level) ||
-                    segmentCrossesVoxelPlane(plane, lo + 0.5 * size, size, p, a + dir * exit,
-                            kPlaneTolerance);
-            if (blocks) transmittance *= 1.0 - coverage;
+            if (!voxelMetAtPlane(plane, level)) {
+                transmittance *= 1.0 - (voxel.raster.z != 0.0 ? directionalCoverage(texel, dir)
+                                                              : coverage);
+            } else if (segmentCrossesVoxelPlane(plane, lo + 0.5 * size, size, p, a + dir * exit,
+                               kPlaneTolerance)) {
+                transmittance *= 1.0 - coverage;
+            }
         }
         t = exit;
     }

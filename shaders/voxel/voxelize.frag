@@ -49,7 +49,9 @@ void main() {
         imageStore(voxelAlbedo, texel, roundToHalf(keep * albedo + add * vec4(reflectance, 1.0), dither));
         imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, planeOffset), dither));
         vec4 irradiance = imageLoad(voxelIrradiance, texel);
-        imageStore(voxelIrradiance, texel, roundToHalf(vec4(irradiance.rgb, irradiance.a + area), dither));
+        vec3 projected = voxel.raster.z != 0.0 ? area * abs(n) : vec3(0.0);
+        imageStore(voxelIrradiance, texel,
+                roundToHalf(irradiance + vec4(projected, area), dither));
         if (voxel.grid.z != 0) {
             for (int face = 0; face < VOXEL_FACES; ++face) {
                 float projection = faceProjection(n, face);

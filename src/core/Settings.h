@@ -59,6 +59,9 @@ struct VoxelSettings {
                                   // (-1 = all; wide texels average across walls)
     bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds
                                   // (finest level holding the scene) instead of the camera
+    // Not a key of its own: voxelization also sums the surfaces' area projected onto the three
+    // axes (the visibility marches' occupancy, FrameRenderer::updateOccupancy).
+    bool projectedAreas = false;
     bool clampCentre = false;     // voxel.clamp_centre: the camera-centred cascade's centre
                                   // kept inside the scene's bounds (the adaptive plan's choice)
     float size = 0.0f;            // voxel.size: finest voxel edge (m) of the adaptive plan;

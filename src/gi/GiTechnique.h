@@ -36,6 +36,9 @@ struct OccupancyVolume {
     const gl::Texture& coverage;       // sampler3D rgba16f at BIND_TEX_VOXEL_ALBEDO, a = coverage
     const gl::Texture& planes;         // sampler3D rgba8_snorm at BIND_TEX_VOXEL_NORMAL: mean
                                        // normal and the surface's offset along it
+    const gl::Texture& projectedAreas; // sampler3D rgba16f at BIND_TEX_VOXEL_IRRADIANCE: the
+                                       // surfaces' area projected onto the x, y, z faces, in
+                                       // face areas (rgb)
     const gl::Buffer& voxelUniforms;   // VoxelUniforms (std140) at BIND_UBO_VOXEL
     std::uint64_t version = 0;         // changes whenever the occupancy is recomputed
     int levels = 1;                    // cascade levels in the textures

@@ -84,16 +84,18 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
     Settings occupancySettings = mSettings;
     occupancySettings.voxel.sceneCentred = true;
     occupancySettings.voxel.coverageMaxAxis = true;
+    occupancySettings.voxel.projectedAreas = true;
     // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
     if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
     if (mSettings.voxel.occupancyResolution > 0) {
         occupancySettings.voxel.resolution = mSettings.voxel.occupancyResolution;
     }
-    // Shadow cones widen towards an area light: the coarser levels (the same scene at 2x and
-    // 4x the voxel) are their pre-filtered footprints. No more: the scene is all in the finest
-    // level, and the voxelization raster spans the coarsest, so each level more halves the
-    // raster samples per finest voxel.
-    if (voxelShadows()) occupancySettings.voxel.levels = kShadowConeLevels;
+    // The scene is all in the finest level, and the voxelization raster spans the coarsest, so
+    // each level more halves the raster samples per finest voxel and leaves holes in thin
+    // walls that the visibility marches pass through. The marches of the atlas and the VPLs
+    // walk only the finest level; shadow cones widen towards an area light, and the coarser
+    // levels (the same scene at 2x and 4x the voxel) are their pre-filtered footprints.
+    occupancySettings.voxel.levels = voxelShadows() ? kShadowConeLevels : 1;
     std::string error;
     const gl::MemoryScope memoryScope(mOccupancyMemory);
     if (!mOccupancy) {

@@ -87,6 +87,8 @@ public:
     [[nodiscard]] std::optional<vpl::VplReport> vplReport() const;
     // The active GI technique, or nullptr in direct mode.
     const GiTechnique* technique() const { return mGi.get(); }
+    // The voxel occupancy the visibility marches walk, or nullptr while no mode needs one.
+    const voxel::VoxelizationManager* occupancyManager() const { return mOccupancy.get(); }
 
 private:
     // The colour target's RGBA32F texels, GL rows (bottom to top).

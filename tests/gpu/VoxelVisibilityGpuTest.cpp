@@ -61,12 +61,10 @@ glm::vec3 withinVoxel(const voxel::CascadeVolume& volume, glm::vec3 p) {
 
 class VoxelVisibilityGpuTest : public GpuTest {};
 
-// A cube of half-size 0.31 at the origin and a 4 cm slab at x = 0.49..0.53, inside two squares
-// at y = +-1 that fix the bounds to [-1, 1]^3. On one scene-centred level of 32^3 (the bounds
-// and a margin: 6.9 cm voxels) the cube's vertical edges run through the middle of their voxels,
-// each holding two faces in equal parts, and both big faces of the slab share one voxel column.
-TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStillBlock) {
-    if (!mContext) GTEST_SKIP();
+// Runs the cases of both tests below in the lit cascade of voxel GI, whose voxels of several
+// surfaces block by their coverage, or in the occupancy the atlas' and the VPLs' marches walk
+// (projectedAreas), where they block by the surfaces' area projected across the segment.
+void edgeAndSlabCases(bool projectedAreas) {
     scene::Scene scene;
     scene.materials.resize(1);
     addPrimitive(scene, horizontalSquare(1.0f, -1.0f));
@@ -81,7 +79,20 @@ TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStil
     settings.voxel.resolution = 32;
     settings.voxel.sceneCentred = true;
     VoxelFrame frame(scene, settings, {16, 16});
-    const voxel::CascadeVolume& volume = frame.manager().volume();
+    // The occupancy VPL GI marches (FrameRenderer::updateOccupancy), on the same level.
+    gl::ShaderLibrary shaders;
+    render::FrameRenderer renderer;
+    std::string error;
+    ASSERT_TRUE(renderer.init(scene, settings, shaders, error)) << error;
+    ASSERT_TRUE(renderer.setMode(render::GiMode::Vpl, error)) << error;
+    gl::GpuProfiler profiler;
+    renderer.render(scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds), {16, 16},
+            render::OutputComponent::Final, profiler);
+    ASSERT_NE(renderer.occupancyManager(), nullptr);
+    const voxel::VoxelizationManager& manager =
+            projectedAreas ? *renderer.occupancyManager() : frame.manager();
+    const voxel::CascadeVolume& volume = manager.volume();
+    ASSERT_EQ(volume.voxelSize(0), frame.manager().volume().voxelSize(0));
     const float size = volume.voxelSize(0);
     const glm::vec3 edge(h, 0.03f, h);   // on the cube's (+x, +z) vertical edge
     const glm::vec3 inVoxel = withinVoxel(volume, edge);
@@ -91,15 +102,17 @@ TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStil
             << "the slab's faces share a voxel";
     ASSERT_LT(slabHi - slabLo, size);
 
-    const voxel::VoxelizationManager& manager = frame.manager();
     const gi::OccupancyVolume occupancy = manager.occupancy();
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, occupancy.coverage.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, occupancy.planes.id());
+    glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, occupancy.projectedAreas.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy.voxelUniforms.id());
 
     const glm::vec3 out = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));      // off the edge
     const glm::vec3 along = glm::normalize(glm::vec3(1.0f, 0.0f, -1.0f));   // past it
     const glm::vec3 slabLine(0.0f, 0.1f, 0.1f);
+    const glm::vec3 slabCentre(0.5f * (slabLo + slabHi), 0.1f, 0.1f);
+    const glm::vec3 slant = glm::normalize(glm::vec3(1.0f, 0.4f, 0.8f));
     const std::vector<SegmentCase> cases = {
             // Parallel to the edge's diagonal, a quarter voxel outside it, 15 cm either way:
             // through the edge's voxel, and a voxel or more out from the faces' voxels.
@@ -114,8 +127,10 @@ TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStil
                     slabLine + glm::vec3(0.8f, 0.0f, 0.0f)),
             // Beside everything.
             segment({-0.8f, 0.6f, 0.6f}, {0.8f, 0.6f, 0.6f}),
+            // Across the slab at a slant, through several of its voxels.
+            segment(slabCentre - slant * 0.2f, slabCentre + slant * 0.2f),
     };
-    std::string error;
+    error.clear();
     const std::vector<glm::vec4> r = runComputeProbe<glm::vec4>(
             "tests/gpu/shaders/voxel_visibility_probe.comp", cases, error);
     ASSERT_EQ(r.size(), cases.size()) << error;
@@ -124,6 +139,23 @@ TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStil
     EXPECT_LT(r[2].x, 0.05f) << "a segment through the cube's -x face is blocked";
     EXPECT_LT(r[3].x, 0.05f) << "a slab thinner than a voxel blocks what crosses it";
     EXPECT_EQ(r[4].x, 1.0f) << "a segment beside everything is not blocked";
+    EXPECT_LT(r[5].x, 0.05f) << "a slab blocks what crosses it at a slant";
+}
+
+// A cube of half-size 0.31 at the origin and a 4 cm slab at x = 0.49..0.53, inside two squares
+// at y = +-1 that fix the bounds to [-1, 1]^3. On one scene-centred level of 32^3 (the bounds
+// and a margin: 6.9 cm voxels) the cube's vertical edges run through the middle of their voxels,
+// each holding two faces in equal parts, and both big faces of the slab share one voxel column.
+TEST_F(VoxelVisibilityGpuTest, EdgeVoxelsBlockOnlyWhatCrossesTheEdgeAndSlabsStillBlock) {
+    if (!mContext) GTEST_SKIP();
+    edgeAndSlabCases(false);
+}
+
+// The same in the occupancy the atlas' and the VPLs' marches walk, where a voxel of several
+// surfaces blocks by its surfaces' area projected across the segment.
+TEST_F(VoxelVisibilityGpuTest, ProjectedCoverageBlocksEdgesAndSlabsAlike) {
+    if (!mContext) GTEST_SKIP();
+    edgeAndSlabCases(true);
 }
 
 } // namespace

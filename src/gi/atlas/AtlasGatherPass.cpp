@@ -68,6 +68,7 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.occupancy->projectedAreas.id());
     }
     glBindVertexArray(mEmpty.id());
     // A sample walks one segment; a sky direction one for each side of a double-sided receiver.

@@ -128,8 +128,8 @@ void VoxelizationManager::writeUniforms() {
     // One raster over the coarsest level, or one per level over its own extent
     // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
     const float rasterPixel = 1.0f / float(mSettings.multiplier);
-    u.raster = glm::vec4(mSettings.rasterPerLevel ? 1.0f : 0.0f, rasterPixel * rasterPixel, 0.0f,
-            0.0f);
+    u.raster = glm::vec4(mSettings.rasterPerLevel ? 1.0f : 0.0f, rasterPixel * rasterPixel,
+            mSettings.projectedAreas ? 1.0f : 0.0f, 0.0f);
     u.modes = glm::vec4(mSettings.injectFragmentMean ? INJECT_FRAGMENT : INJECT_AREA,
             mGlossyMaterials ? 1.0f : 0.0f, mSettings.coverageMaxAxis ? 1.0f : 0.0f,
             mSettings.coarsePlanes ? 1.0f : 0.0f);

@@ -45,7 +45,8 @@ public:
     // and propagates coverage; no light injection, no tracing.
     void updateOccupancy(const GiFrameInputs& in, gl::GpuProfiler& profiler);
     [[nodiscard]] OccupancyVolume occupancy() const {
-        return {mTextures.albedo, mTextures.normal, mUniforms, mContentVersion, mVolume.levels()};
+        return {mTextures.albedo, mTextures.normal, mTextures.irradiance, mUniforms,
+                mContentVersion, mVolume.levels()};
     }
     // How many frames reused the previous frame's voxels and light (for tests and reports).
     [[nodiscard]] std::uint64_t reusedFrames() const { return mReusedFrames; }

@@ -23,6 +23,7 @@ std::vector<shader::GpuVpl> VplBouncePass::execute(const std::vector<shader::Gpu
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy.voxelUniforms.id());
     glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, occupancy.coverage.id());
     glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, occupancy.planes.id());
+    glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, occupancy.projectedAreas.id());
     glDispatchCompute(GLuint((rays + VPL_BOUNCE_LOCAL_SIZE - 1) / VPL_BOUNCE_LOCAL_SIZE), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);

@@ -42,6 +42,7 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.occupancy->projectedAreas.id());
     }
     if (in.octree) in.octree->bind();
     const int segment = in.occupancy ? in.occupancy->visibilityLoopIterations()
