@@ -204,9 +204,10 @@ def main():
               "the specular component with the default plan 0.755 (indirect) and 0.832 "
               "(together, outside the target), with the fixed plan 0.266 and 0.327; the metal "
               "block 0.981 and 0.979. A rough dielectric (roughness 1) reflects 0.96 of its "
-              "base colour plus a specular albedo of about 0.02 under uniform light, more "
-              "of both at grazing light: the box's walls sent on 1-2% too much, and that "
-              "excess was a quarter of the specular component the path tracer measures."]
+              "base colour plus a specular albedo of about 0.02 under uniform light, and "
+              "less of the former and more of the latter at grazing light: the box's walls "
+              "sent on 1-2% too much, and that excess was a quarter of the specular component "
+              "the path tracer measures."]
 
     # Every GI mode's indirect light with the default settings: the atlas and VPL GI trace no
     # specular cone, so their glossy surfaces reflect only the diffuse term of what they gather.
