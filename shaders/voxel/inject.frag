@@ -9,10 +9,8 @@
 // Fragments are spread evenly in the light's image, not over the surface, so that mean
 // over-weights surfaces close to the light (a ceiling 1 cm above a point light reads its
 // peak irradiance) and voxels the light sees only partly read the lit part's irradiance.
-// INJECT_AREA: each fragment carries the flux through its light pixel,
-//   phi = E * A, A = footprint * d^2 * cos^3(theta_axis) / cos(theta_surface) (perspective)
-//                A = footprint / cos(theta_surface)                           (orthographic),
-// and the voxel's irradiance is the summed flux over the surface area voxelization measured:
+// INJECT_AREA: each fragment carries the flux through its light pixel, phi = E * A (A the
+// surface area the pixel covers, light_view.glsl), and the voxel's irradiance is the summed flux over the surface area voxelization measured:
 // the area-weighted mean irradiance of the surfaces in the voxel, lit or not.
 // With voxel.anisotropic the flux is also summed per face of the voxel, projected onto the
 // faces the lit side faces (directional_build.comp).
@@ -20,7 +18,7 @@
 
 layout(early_fragment_tests) in;
 
-#include "../common/lighting.glsl"
+#include "../common/light_view.glsl"
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "voxel_directional.glsl"
@@ -39,16 +37,12 @@ in VertexData { VERTEX_DATA_MEMBERS } vin;
 void main() {
     GpuMaterial m = materials[drawMaterial];
     if (materialMaskedOut(m, vin.texcoord0, vin.texcoord1, vin.color)) discard;
-    GpuLight light = lights[lightIndex];
-    vec3 n = normalize(vin.normal);
     // The side of the surface the light sees is the lit side, whatever the winding.
-    vec3 toLight;
-    float distance;
-    lightDirection(light, vin.position, toLight, distance);
-    if (dot(n, toLight) < 0.0) n = -n;
-    vec3 e = lightIrradiance(light, vin.position, n);
-    e *= injectedIrradianceScale(m, materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color).rgb,
-            dot(n, toLight));
+    LitSurface lit = litSurface(lights[lightIndex], vin.position, normalize(vin.normal));
+    vec3 n = lit.normal;
+    vec3 e = lit.irradiance * injectedIrradianceScale(m,
+            materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color).rgb,
+            dot(n, lit.toLight));
     if (max(e.r, max(e.g, e.b)) <= voxel.injection.x) discard;
     int level = finestLevel(vin.position);
     if (level < 0) discard;
@@ -60,12 +54,7 @@ void main() {
         })
         return;
     }
-    float cosSurface = max(dot(n, toLight), 0.05);
-    float area = pixelFootprint / cosSurface;
-    if (viewAxis.w == 0.0) {
-        float cosAxis = max(dot(-toLight, viewAxis.xyz), 0.0);
-        area *= distance * distance * cosAxis * cosAxis * cosAxis;
-    }
+    float area = lightPixelArea(viewAxis, pixelFootprint, lit, max(dot(n, lit.toLight), 0.05));
     float size = levelVoxelSize(level);
     vec3 flux = e * area / (size * size);
     VOXEL_LOCKED_AVERAGE(texel, {

@@ -1,17 +1,16 @@
 // Reflective shadow map (Dachsbacher and Stamminger 2005; SEEDS.md section 4): every pixel of
 // a light's view holds the surface the light sees there, its normal on the lit side and the
 // flux it reflects,
-//   phi = rho * E * A,   A = footprint * d^2 * cos^3(theta_axis) / cos(theta_surface)  (perspective)
-//                        A = footprint / cos(theta_surface)                            (orthographic),
+//   phi = rho * E * A,
 // A being the surface area the pixel covers and E this light's unshadowed irradiance (the
-// view's depth test is the shadowing). For a point light this is rho * I * (the pixel's solid
+// view's depth test is the shadowing; light_view.glsl). For a point light this is rho * I * (the pixel's solid
 // angle), so the pixels of six faces hold rho times the light's whole power. The flux
 // target's alpha keeps A: the lit area sets the clamp's scale (VplGi.h). Area lights are
 // seen from their centre, E being the emitters' exact irradiance (lighting.glsl): the texels'
 // flux sums to the reflected power as the direct pass lights it. rho is what the surface sends
 // on of the light (reflectance.glsl): the base colour, or with the glTF model its BRDF's
 // albedo for the light's direction.
-#include "../common/lighting.glsl"
+#include "../common/light_view.glsl"
 #include "../common/material.glsl"
 #include "../common/reflectance.glsl"
 #include "../common/vertex_data.glsl"
@@ -33,23 +32,12 @@ void main() {
     GpuMaterial m = materials[drawMaterial];
     vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
     if (materialCutOut(m, baseColor.a)) discard;
-    GpuLight light = lights[lightIndex];
-    vec3 n = normalize(vin.normal);
-    vec3 toLight;
-    float distance;
-    lightDirection(light, vin.position, toLight, distance);
-    // The side the light sees is the lit side, as the path tracer turns normals.
-    if (dot(n, toLight) < 0.0) n = -n;
-    vec3 e = lightIrradiance(light, vin.position, n);
-    // A grazing surface's area grows as its irradiance shrinks; their product stays finite.
-    float cosSurface = max(dot(n, toLight), 1e-3);
-    float area = pixelFootprint / cosSurface;
-    if (viewAxis.w == 0.0) {
-        float cosAxis = max(dot(-toLight, viewAxis.xyz), 0.0);
-        area *= distance * distance * cosAxis * cosAxis * cosAxis;
-    }
+    LitSurface lit = litSurface(lights[lightIndex], vin.position, normalize(vin.normal));
+    float cosSurface = max(dot(lit.normal, lit.toLight), 1e-3);
+    float area = lightPixelArea(viewAxis, pixelFootprint, lit, cosSurface);
     outPosition = vec4(vin.position, 1.0);
-    outNormal = vec4(n, 1.0);
-    vec3 reflectance = reflectanceOfLight(m, baseColor.rgb, dot(n, toLight), gltfReflectance != 0);
-    outFlux = vec4(reflectance * e * area, area);
+    outNormal = vec4(lit.normal, 1.0);
+    vec3 reflectance = reflectanceOfLight(m, baseColor.rgb, dot(lit.normal, lit.toLight),
+            gltfReflectance != 0);
+    outFlux = vec4(reflectance * lit.irradiance * area, area);
 }
