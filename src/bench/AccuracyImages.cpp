@@ -41,18 +41,13 @@ float stripExposure(const SuiteSceneResult& result,
     return 1.0f;
 }
 
-glm::vec3 heat(float t) {
-    t = std::clamp(t, 0.0f, 1.0f) * 3.0f;
-    return {std::min(t, 1.0f), std::clamp(t - 1.0f, 0.0f, 1.0f), std::clamp(t - 2.0f, 0.0f, 1.0f)};
-}
-
 core::Image errorMap(const core::Image& image, const core::Image& truth, float scale) {
     core::Image out(truth.width, truth.height);
     if (image.width != truth.width || image.height != truth.height) return out;
     for (int y = 0; y < truth.height; ++y) {
         for (int x = 0; x < truth.width; ++x) {
-            const float difference = core::luminance(glm::abs(image.at(x, y) - truth.at(x, y)));
-            out.set(x, y, heat(scale > 0.0f ? difference / scale : 0.0f));
+            const float difference = core::luminance(image.at(x, y)) - core::luminance(truth.at(x, y));
+            out.set(x, y, signedErrorColour(difference, scale));
         }
     }
     return out;
@@ -68,6 +63,13 @@ void paste(core::Image& strip, const core::Image& panel, int index) {
 } // namespace
 
 std::string accuracyImageName(const std::string& scene) { return "accuracy_" + scene + ".png"; }
+
+glm::vec3 signedErrorColour(float difference, float scale) {
+    if (!(scale > 0.0f) || !std::isfinite(difference)) return glm::vec3(0.0f);
+    const float t = std::min(std::abs(difference) / scale, 1.0f);
+    // A touch of green keeps small errors visible on a dark screen without mixing the sides.
+    return difference > 0.0f ? glm::vec3(t, 0.25f * t, 0.0f) : glm::vec3(0.0f, 0.25f * t, t);
+}
 
 bool writeAccuracyImage(const std::string& path, const SuiteSceneResult& result,
         std::string& error) {

@@ -309,8 +309,10 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
     scenesSection(out, results);
     out << "## Images\n\nIndirect light, each row: reference | voxel | atlas (converged where "
            "run) | vpl | voxel error | atlas error | vpl error. The four images share the reference's auto "
-           "exposure and the filmic curve; the error maps show |ours - reference| on a heat "
-           "scale where white is the reference's mean indirect luminance.\n\n";
+           "exposure and the filmic curve; the error maps are signed, in luminance: red where "
+           "ours is brighter than the reference, blue where it is darker, black where they "
+           "agree, at full strength where the difference reaches the reference's mean indirect "
+           "luminance.\n\n";
     for (const SuiteSceneResult& r : results) {
         out << "### " << r.scene.name << "\n\n![" << r.scene.name << "](images/"
             << accuracyImageName(r.scene.name) << ")\n\n";
