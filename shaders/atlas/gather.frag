@@ -25,7 +25,9 @@
 // A double-sided texel is two surfaces back to back (AtlasTextures.h): a sender sends each
 // side's own radiance to that side, and p(y) counts both sides' power; a receiver adds what
 // arrives against its normal to the back side's sum. With VISIBILITY_VOXEL each pair is
-// weighted by the voxel occupancy's transmittance (common/voxel_visibility.glsl).
+// weighted by the voxel occupancy's transmittance (common/voxel_visibility.glsl); with
+// VISIBILITY_BVH a ray through the scene's triangles decides it (common/bvh.glsl), each end
+// pushed half a texel edge off its surface, as the voxel march pushes them one voxel.
 // Output: the sums of both sides (before the 1/N normalisation) added to the running sums by
 // blending.
 #include "atlas_common.glsl"
@@ -33,6 +35,21 @@
 #include "../common/hash.glsl"
 #ifdef VISIBILITY_VOXEL
 #include "../common/voxel_visibility.glsl"
+#endif
+#ifdef VISIBILITY_BVH
+#include "../common/bvh.glsl"
+
+// How far a texel's rays start off its surface: half the edge of the area a it stands for.
+float rayOffset(float a) { return 0.5 * sqrt(max(a, 0.0)); }
+
+// 1 where nothing lies between the two texels, each seen from the side given.
+float rayVisibility(vec3 x, vec3 xSide, float xArea, vec3 y, vec3 ySide, float yArea) {
+    vec3 a = x + xSide * rayOffset(xArea);
+    vec3 d = y + ySide * rayOffset(yArea) - a;
+    float len = length(d);
+    if (len <= 0.0) return 1.0;
+    return bvhOccluded(a, d / len, len * (1.0 - 1e-4)) ? 0.0 : 1.0;
+}
 #endif
 
 layout(binding = BIND_TEX_ATLAS_DIRECT) uniform sampler2D atlasDirect;
@@ -58,7 +75,7 @@ layout(location = LOC_ATLAS_GATHER_RANGE) uniform ivec4 gatherRange;
 // and new for each receiver and set, each seeing the sky unless the voxel occupancy blocks it
 // on its way out of the cascade (without voxel visibility nothing blocks it). The draws' shares
 // add up to the sky's irradiance.
-vec3 skyIrradiance(vec3 x, vec3 n, uint seed) {
+vec3 skyIrradiance(vec3 x, vec3 n, float area, uint seed) {
     int directions = int(atlas.sky.w);
     if (directions <= 0 || gatherRange.z >= gatherRange.w) return vec3(0.0);
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
@@ -74,6 +91,8 @@ vec3 skyIrradiance(vec3 x, vec3 n, uint seed) {
         float toBoundary = exitDistance(x, w, levelOrigin(coarsest),
                 levelVoxelSize(coarsest) * float(voxelResolution()));
         visible += toBoundary > 0.0 ? voxelTransmittance(x, n, x + w * toBoundary, -w) : 1.0;
+#elif defined(VISIBILITY_BVH)
+        visible += bvhOccluded(x + n * rayOffset(area), w, 1e30) ? 0.0 : 1.0;
 #else
         visible += 1.0;
 #endif
@@ -87,7 +106,8 @@ layout(location = 1) out vec4 outSumBack;
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     if (texelFetch(atlasDirect, texel, 0).a <= 0.0) discard;
-    vec3 x = texelFetch(atlasPosition, texel, 0).xyz;
+    vec4 receiverPosition = texelFetch(atlasPosition, texel, 0);
+    vec3 x = receiverPosition.xyz;
     vec4 receiverNormal = texelFetch(atlasNormal, texel, 0);
     vec3 nx = receiverNormal.xyz;
     bool receiverTwoSided = receiverNormal.w > 0.5;
@@ -141,15 +161,20 @@ void main() {
         vec3 receiverSide = receiverBack ? -nx : nx;
         vec3 senderSide = senderBack ? -senderNormal.xyz : senderNormal.xyz;
         contribution *= voxelTransmittance(x, receiverSide, y.xyz, senderSide);
+#elif defined(VISIBILITY_BVH)
+        vec3 receiverSide = receiverBack ? -nx : nx;
+        vec3 senderSide = senderBack ? -senderNormal.xyz : senderNormal.xyz;
+        contribution *= rayVisibility(x, receiverSide, receiverPosition.w, y.xyz, senderSide, y.w);
 #endif
         if (receiverBack) sumBack += contribution;
         else sum += contribution;
     }
     float scale = area ? rowPower[resolution - 1] : atlas.sampling.z;
     // The sums are divided by the samples accumulated: the sky's mean counts `count` times.
-    vec3 sky = skyIrradiance(x, nx, receiver * 7919u) * float(count);
-    vec3 skyBack = receiverTwoSided ? skyIrradiance(x, -nx, receiver * 7919u + 1u) * float(count)
-                                    : vec3(0.0);
+    vec3 sky = skyIrradiance(x, nx, receiverPosition.w, receiver * 7919u) * float(count);
+    vec3 skyBack = receiverTwoSided
+            ? skyIrradiance(x, -nx, receiverPosition.w, receiver * 7919u + 1u) * float(count)
+            : vec3(0.0);
     outSum = vec4(sum * scale + sky, 1.0);
     outSumBack = vec4(sumBack * scale + skyBack, 1.0);
 }

@@ -178,6 +178,7 @@
 #define ATLAS_ESTIMATOR_MERZ2010    1   // the thesis' eq. 9: L cos(theta_x) x 2 pi / N
 #define ATLAS_VISIBILITY_NONE       0   // senders are never occluded (the thesis)
 #define ATLAS_VISIBILITY_VOXEL      1   // ray march through the voxel occupancy
+#define ATLAS_VISIBILITY_BVH        2   // rays through the scene's triangles (common/bvh.glsl)
 #define ATLAS_VIEW_DIRECT           0   // debug views of the atlas layers, seen from the camera
 #define ATLAS_VIEW_NORMAL           1
 #define ATLAS_VIEW_POSITION         2

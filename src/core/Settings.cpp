@@ -279,7 +279,10 @@ const std::vector<SettingSpec>& settingSpecs() {
         choiceSetting("atlas.estimator",
                 "gather weighting: area form (converges) or the thesis' 2 pi / N",
                 {"area", "merz2010"}, [](Settings& s) -> int& { return s.atlas.estimator; }),
-        choiceSetting("atlas.visibility", "occlusion between atlas texels", {"none", "voxel"},
+        choiceSetting("atlas.visibility",
+                "occlusion between atlas texels: none, the voxel occupancy, or rays through the "
+                "scene's triangles (bvh, exact and slower)",
+                {"none", "voxel", "bvh"},
                 [](Settings& s) -> int& { return s.atlas.visibility; }),
         boolSetting("atlas.progressive", "accumulate sample sets over frames while nothing changes",
                 [](Settings& s) -> bool& { return s.atlas.progressive; }),

@@ -91,7 +91,7 @@ struct AtlasSettings {
                                   // 0 = half the plan's finest voxel
     int samples = 100;            // atlas.samples: N, Hammersley points per gather set
     int estimator = 0;            // atlas.estimator: ATLAS_ESTIMATOR_* (0 area, 1 merz2010)
-    int visibility = 0;           // atlas.visibility: ATLAS_VISIBILITY_* (0 none, 1 voxel)
+    int visibility = 0;           // atlas.visibility: ATLAS_VISIBILITY_* (0 none, 1 voxel, 2 bvh)
     bool progressive = true;      // atlas.progressive: accumulate sets while nothing changes
     int targetSamples = 1024;     // atlas.target_samples: stop accumulating at this count
     bool rotate = true;           // atlas.rotate: new Cranley-Patterson offset per set

@@ -59,6 +59,10 @@ struct GiFrameInputs {
     glm::ivec2 outputSize;                 // full-resolution render size, pixels
     DebugView debugView = DebugView::None;
     const OccupancyVolume* occupancy = nullptr;   // voxel occupancy of this frame, if any
+    // The scene's BVH, bound at BIND_SSBO_BVH_* (shaders/common/bvh.glsl) when a technique
+    // asked for it: the most loop iterations one ray through it runs (every node and
+    // triangle once), for splitting work within SHADER_LOOP_ITERATIONS; 0 when none is bound.
+    int bvhRayIterations = 0;
 };
 
 struct GiOutputs {

@@ -9,6 +9,8 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
+#include <climits>
 #include <cstdio>
 
 namespace gi::render {
@@ -180,6 +182,19 @@ void FrameRenderer::updateShadowRays(gl::GpuProfiler& profiler) {
     }
 }
 
+int FrameRenderer::updateGiBvh(gl::GpuProfiler& profiler) {
+    if (mMode != GiMode::Atlas || mSettings.atlas.visibility != ATLAS_VISIBILITY_BVH) return 0;
+    std::string error;
+    if (!mBvhShadows.update(*mPosedScene, mLights, mScene->geometryVersion(), profiler, error)) {
+        std::fprintf(stderr, "atlas.visibility=bvh: %s\n", error.c_str());
+        return 0;
+    }
+    mBvhShadows.bind();
+    const reference::GpuBvh& bvh = mBvhShadows.bvh();
+    const std::size_t iterations = bvh.nodeCount() + bvh.triangleCount();
+    return int(std::min<std::size_t>(std::max<std::size_t>(iterations, 1), std::size_t(INT_MAX)));
+}
+
 void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputComponent output) {
     shader::FrameUniforms frame{};
     frame.viewProjection = camera.viewProjection();
@@ -221,13 +236,14 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     if (!needsOccupancy) mOccupancy.reset();
     const std::optional<OccupancyVolume> occupancy =
             needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
+    const int bvhRayIterations = updateGiBvh(profiler);
     GiOutputs gi;
     if (mGi) {
         const DebugView debugView = outputAvailable(output, mMode)
                                             ? outputEntry(output).debugView
                                             : DebugView::None;
         mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView,
-                            occupancy ? &*occupancy : nullptr},
+                            occupancy ? &*occupancy : nullptr, bvhRayIterations},
                 profiler);
         gi = mGi->outputs();
     }

@@ -100,6 +100,9 @@ private:
     // Builds or refreshes the BVH or line space the shadow method traces, if it traces one,
     // for the scene as last posed.
     void updateShadowRays(gl::GpuProfiler& profiler);
+    // The scene's BVH for atlas.visibility=bvh: built when needed and bound for the GI pass;
+    // returns GiFrameInputs::bvhRayIterations (0 when the atlas does not ask for it).
+    int updateGiBvh(gl::GpuProfiler& profiler);
     std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);
 
     // The plan for `requested`, this scene and mAllLights; mSettings is applyPlan of it and

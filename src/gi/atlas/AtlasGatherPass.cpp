@@ -7,19 +7,21 @@
 namespace gi::atlas {
 
 bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
-    mProgram = shaders.build({"atlas/gather",
+    // One shader, compiled once per way of testing visibility.
+    auto gather = [&](const char* name, std::vector<std::string> defines) {
+        return shaders.build({name,
                                      {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
                                              {GL_FRAGMENT_SHADER, "atlas/gather.frag"}},
-                                     {}},
-            error);
+                                     std::move(defines)},
+                error);
+    };
+    mProgram = gather("atlas/gather", {});
     if (!mProgram) return false;
-    mVoxelProgram = shaders.build({"atlas/gather_voxel",
-                                          {{GL_VERTEX_SHADER, "common/fullscreen.vert"},
-                                                  {GL_FRAGMENT_SHADER, "atlas/gather.frag"}},
-                                          {"VISIBILITY_VOXEL"}},
-            error);
+    mVoxelProgram = gather("atlas/gather_voxel", {"VISIBILITY_VOXEL"});
+    if (!mVoxelProgram) return false;
+    mBvhProgram = gather("atlas/gather_bvh", {"VISIBILITY_BVH"});
     mEmpty = gl::createVertexArray("atlas/gather");
-    return bool(mVoxelProgram);
+    return bool(mBvhProgram);
 }
 
 bool AtlasGatherPass::attach(const AtlasTextures& textures, std::string& error) {
@@ -47,7 +49,8 @@ void AtlasGatherPass::clear() {
 void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
     (void)out;   // textures.sumsOf(bounce) is attached to mFramebuffers[bounce]
     gl::GpuScope scope(profiler, "atlas/gather");
-    const GLuint program = in.occupancy ? mVoxelProgram.id() : mProgram.id();
+    const bool bvh = in.bvhRayIterations > 0;
+    const GLuint program = bvh ? mBvhProgram.id() : in.occupancy ? mVoxelProgram.id() : mProgram.id();
     glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffers[std::size_t(in.bounce)].id());
     glViewport(0, 0, mResolution, mResolution);
     glDisable(GL_DEPTH_TEST);
@@ -64,15 +67,17 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, in.textures.position.id());
     glBindTextureUnit(BIND_TEX_ATLAS_SAMPLES, in.samples.id());
     in.senderSampling.bind();
-    if (in.occupancy) {
+    if (in.occupancy && !bvh) {
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
         glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
         glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.occupancy->projectedAreas.id());
     }
     glBindVertexArray(mEmpty.id());
-    // A sample walks one segment; a sky direction one for each side of a double-sided receiver.
-    const int segment = in.occupancy ? in.occupancy->visibilityLoopIterations() : 0;
+    // A sample walks one segment or ray; a sky direction one for each side of a double-sided
+    // receiver.
+    const int segment = bvh ? in.bvhRayIterations
+                            : in.occupancy ? in.occupancy->visibilityLoopIterations() : 0;
     for (const glm::ivec2& sky : gl::rangesWithinLoopBudget(in.skyDirections, 2 * (1 + segment))) {
         glProgramUniform4i(program, LOC_ATLAS_GATHER_RANGE, 0, 0, sky.x, sky.y);
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -5,8 +5,8 @@
 // mode); clear() starts over.
 // Inputs : AtlasTextures direct, normal, position; the Hammersley texture (RG32F, N x 1);
 //          the sender sampling table and point pool; AtlasUniforms (R, N, estimator,
-//          rotation offset, estimator constant); optionally a voxel occupancy volume for
-//          visibility.
+//          rotation offset, estimator constant); optionally a voxel occupancy volume or the
+//          scene's BVH for visibility.
 // Outputs: AtlasTextures sums (RGBA32F): rgb += estimator constant x sum over this set,
 //          a = 1 where a receiver was written.
 // A set is drawn in several draws, the sky's directions and then ranges of the samples, each
@@ -36,6 +36,9 @@ public:
         int bounce = 0;                   // 0: the direct light's gather, b: bounce b's
         int sampleCount = 0;              // N, the set's samples (AtlasUniforms size.y)
         int skyDirections = 0;            // the sky's directions per set (AtlasUniforms sky.w)
+        // > 0: visibility by rays through the scene's BVH bound at BIND_SSBO_BVH_* (instead of
+        // the occupancy), each running at most this many loop iterations.
+        int bvhRayIterations = 0;
     };
     struct Outputs {
         const AtlasTextures& textures;    // sumsOf(bounce), a layer attach() bound (blended into)
@@ -49,7 +52,7 @@ public:
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
-    gl::ProgramRef mProgram, mVoxelProgram;
+    gl::ProgramRef mProgram, mVoxelProgram, mBvhProgram;
     std::vector<gl::Framebuffer> mFramebuffers;   // one per bounce
     gl::VertexArray mEmpty;
     int mResolution = 0;

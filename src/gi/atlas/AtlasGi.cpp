@@ -149,7 +149,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         mContent.gBufferValid = false;
         mContent.samples = 0;
         mFrameIndex = 0;
-        mWarnedNoOccupancy = false;
+        mWarnedNoVisibility = false;
     }
     return true;
 }
@@ -173,13 +173,24 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
 
 const OccupancyVolume* AtlasGi::visibilityOccupancy(const GiFrameInputs& in) {
     if (mSettings.visibility != ATLAS_VISIBILITY_VOXEL) return nullptr;
-    if (!in.occupancy && !mWarnedNoOccupancy) {
+    if (!in.occupancy && !mWarnedNoVisibility) {
         std::fprintf(stderr,
                 "atlas: atlas.visibility=voxel needs a voxel occupancy volume and "
                 "this frame has none; senders are not occluded\n");
-        mWarnedNoOccupancy = true;
+        mWarnedNoVisibility = true;
     }
     return in.occupancy;
+}
+
+int AtlasGi::visibilityBvh(const GiFrameInputs& in) {
+    if (mSettings.visibility != ATLAS_VISIBILITY_BVH) return 0;
+    if (in.bvhRayIterations <= 0 && !mWarnedNoVisibility) {
+        std::fprintf(stderr,
+                "atlas: atlas.visibility=bvh needs the scene's BVH and this frame has none; "
+                "senders are not occluded\n");
+        mWarnedNoVisibility = true;
+    }
+    return in.bvhRayIterations;
 }
 
 AtlasGi::FramePlan AtlasGi::planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy) {
@@ -230,6 +241,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
         mPosedGeometry = in.scene.geometryVersion();
     }
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
+    const int bvhRayIterations = visibilityBvh(in);
     const FramePlan plan = planFrame(in, occupancy);
     writeUniforms(plan, in);
     // Progressive sums gather until they reach atlas.target_samples; without progression
@@ -253,7 +265,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                         {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
             }
             mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling, bounce,
-                                    mSettings.samples, skyDirections(in)},
+                                    mSettings.samples, skyDirections(in), bvhRayIterations},
                     {mTextures}, profiler);
             mDilate.execute({mTextures, mUniforms, bounce}, {mTextures}, profiler);
         }

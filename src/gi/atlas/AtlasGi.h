@@ -82,6 +82,8 @@ private:
     bool allocateLayers(std::string& error);
     // The occupancy the gather tests visibility against (atlas.visibility=voxel), or nullptr.
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
+    // The loop iterations of a ray through the scene's BVH (atlas.visibility=bvh), or 0.
+    int visibilityBvh(const GiFrameInputs& in);
     // Decides this frame's work and records in mContent what the layers will hold after it.
     FramePlan planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy);
     // The frame's AtlasUniforms: the only write of the buffer per frame.
@@ -105,7 +107,7 @@ private:
 
     Content mContent;
     std::uint32_t mFrameIndex = 0;     // frames since configure: the set when not progressive
-    bool mWarnedNoOccupancy = false;   // the missing occupancy is reported once per configure
+    bool mWarnedNoVisibility = false;  // a missing occupancy or BVH is reported once per configure
     int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
     bool mConverging = false;          // GiOutputs::converging of the last frame
 
