@@ -4,6 +4,8 @@
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
+#include <utility>
+
 namespace gi::atlas {
 
 bool AtlasGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
