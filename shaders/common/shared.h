@@ -192,6 +192,7 @@
 #define VPL_VISIBILITY_CASCADE      1   // segment march through the voxel occupancy
 #define VPL_BOUNCE_LOCAL_SIZE       64  // the VPL bounce rays run 64 per work group
 #define VPL_VISIBILITY_SVO          2   // restart march through the sparse voxel octree
+#define VPL_VISIBILITY_BVH          3   // rays through the scene's triangles (common/bvh.glsl)
 
 // The sparse voxel octree (gi/vpl/SparseVoxelOctree.h, common/svo.glsl).
 #define SVO_NODE_FLAG               0x80000000u   // the node's cube holds geometry
@@ -445,6 +446,8 @@ struct VplUniforms {                    // std140
     vec4 gather;                        // x = clamp B of 1 / max(B, r^2) (m^2), y = the subset
                                         // scale (tiles^2), z = filter depth tolerance
                                         // (fraction of the depth), w = filter normal cosine
+    vec4 rays;                          // x = how far vpl.visibility=bvh's rays start off both
+                                        // surfaces (m), yzw = unused
 };
 
 struct SvoUniforms {                    // std140

@@ -302,8 +302,11 @@ const std::vector<SettingSpec>& settingSpecs() {
         floatSetting("vpl.clamp",
                 "B of the VPL gather's 1/max(B, r^2), m^2 (0 = from the scene's size)", 0.0f,
                 1e12f, [](Settings& s) -> float& { return s.vpl.clamp; }),
-        choiceSetting("vpl.visibility", "occlusion between shading points and VPLs",
-                {"none", "cascade", "svo"}, [](Settings& s) -> int& { return s.vpl.visibility; }),
+        choiceSetting("vpl.visibility",
+                "occlusion between shading points and VPLs: none, the voxel occupancy "
+                "(cascade), the sparse voxel octree (svo), or rays through the scene's "
+                "triangles (bvh, exact)",
+                {"none", "cascade", "svo", "bvh"}, [](Settings& s) -> int& { return s.vpl.visibility; }),
         powerOfTwoSetting("vpl.svo_resolution",
                 "leaf voxels per side of the sparse voxel octree over the scene (power of two)",
                 16, 1024, Zero::Refused, [](Settings& s) -> int& { return s.vpl.svoResolution; }),

@@ -21,7 +21,7 @@ static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 7,
         "VoxelUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::AtlasUniforms) == 4 * 16, "AtlasUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuVpl) == 3 * 16, "GpuVpl std430 layout drifted");
-static_assert(sizeof(gi::shader::VplUniforms) == 2 * 16, "VplUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::VplUniforms) == 3 * 16, "VplUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::SvoUniforms) == 3 * 16, "SvoUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::SvoBuildState) == 2 * 16 + 4 * (SVO_MAX_DEPTH + 2),
         "SvoBuildState std430 layout drifted");

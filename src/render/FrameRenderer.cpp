@@ -183,10 +183,14 @@ void FrameRenderer::updateShadowRays(gl::GpuProfiler& profiler) {
 }
 
 int FrameRenderer::updateGiBvh(gl::GpuProfiler& profiler) {
-    if (mMode != GiMode::Atlas || mSettings.atlas.visibility != ATLAS_VISIBILITY_BVH) return 0;
+    const bool wanted =
+            (mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_BVH) ||
+            (mMode == GiMode::Vpl && mSettings.vpl.visibility == VPL_VISIBILITY_BVH);
+    if (!wanted) return 0;
     std::string error;
     if (!mBvhShadows.update(*mPosedScene, mLights, mScene->geometryVersion(), profiler, error)) {
-        std::fprintf(stderr, "atlas.visibility=bvh: %s\n", error.c_str());
+        std::fprintf(stderr, "%s=bvh: %s\n",
+                mMode == GiMode::Atlas ? "atlas.visibility" : "vpl.visibility", error.c_str());
         return 0;
     }
     mBvhShadows.bind();

@@ -8,15 +8,20 @@
 namespace gi::vpl {
 
 bool VplGatherPass::init(gl::ShaderLibrary& shaders, std::string& error) {
-    mUnoccluded = shaders.build({"vpl/gather_none", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
-            {"VPL_VISIBILITY VPL_VISIBILITY_NONE"}}, error);
+    // One shader, compiled once per way of testing visibility.
+    auto gather = [&](const char* name, const char* visibility) {
+        return shaders.build({name, {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
+                                     {std::string("VPL_VISIBILITY ") + visibility}},
+                error);
+    };
+    mUnoccluded = gather("vpl/gather_none", "VPL_VISIBILITY_NONE");
     if (!mUnoccluded) return false;
-    mCascade = shaders.build({"vpl/gather_cascade", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
-            {"VPL_VISIBILITY VPL_VISIBILITY_CASCADE"}}, error);
+    mCascade = gather("vpl/gather_cascade", "VPL_VISIBILITY_CASCADE");
     if (!mCascade) return false;
-    mOctree = shaders.build({"vpl/gather_svo", {{GL_COMPUTE_SHADER, "vpl/gather.comp"}},
-            {"VPL_VISIBILITY VPL_VISIBILITY_SVO"}}, error);
-    return bool(mOctree);
+    mOctree = gather("vpl/gather_svo", "VPL_VISIBILITY_SVO");
+    if (!mOctree) return false;
+    mRays = gather("vpl/gather_bvh", "VPL_VISIBILITY_BVH");
+    return bool(mRays);
 }
 
 void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
@@ -27,11 +32,14 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     }
     // The gather's own cost, apart from the filter: with cascade visibility most of it is the
     // march (results-vpl.md compares it with vpl.visibility=none).
+    const bool rays = in.bvhRayIterations > 0 && !in.occupancy && !in.octree;
     gl::GpuScope scope(profiler, in.occupancy ? "vpl/gather_cascade"
                                  : in.octree  ? "vpl/gather_svo"
+                                 : rays       ? "vpl/gather_bvh"
                                               : "vpl/gather");
     const GLuint program = in.occupancy ? mCascade.id()
                            : in.octree  ? mOctree.id()
+                           : rays       ? mRays.id()
                                         : mUnoccluded.id();
     glUseProgram(program);
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VPL, in.uniforms.id());
@@ -47,6 +55,7 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     if (in.octree) in.octree->bind();
     const int segment = in.occupancy ? in.occupancy->visibilityLoopIterations()
                         : in.octree  ? in.octree->visibilityLoopIterations()
+                        : rays       ? in.bvhRayIterations
                                      : 0;
     const std::vector<glm::ivec2> ranges =
             gl::rangesWithinLoopBudget(std::max(in.vplsPerPixel, 1), 1 + segment);

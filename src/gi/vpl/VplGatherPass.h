@@ -23,6 +23,9 @@ public:
         const OccupancyVolume* occupancy;     // non-null: cascade visibility
         const SparseVoxelOctree* octree = nullptr;   // non-null: svo visibility
         int vplsPerPixel = 0;                 // the most VPLs one pixel's subset holds
+        // > 0: visibility by rays through the scene's BVH bound at BIND_SSBO_BVH_*, each
+        // running at most this many loop iterations.
+        int bvhRayIterations = 0;
     };
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
@@ -33,6 +36,7 @@ private:
     gl::ProgramRef mUnoccluded;   // vpl.visibility=none
     gl::ProgramRef mCascade;      // vpl.visibility=cascade
     gl::ProgramRef mOctree;       // vpl.visibility=svo
+    gl::ProgramRef mRays;         // vpl.visibility=bvh
     gl::Texture mResult;
     glm::ivec2 mSize{0};
 };

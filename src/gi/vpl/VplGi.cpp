@@ -137,12 +137,23 @@ const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
     return in.occupancy;
 }
 
+int VplGi::visibilityBvh(const GiFrameInputs& in) {
+    if (mSettings.visibility != VPL_VISIBILITY_BVH) return 0;
+    if (in.bvhRayIterations <= 0 && !mWarnedNoOccupancy) {
+        std::fprintf(stderr, "vpl: vpl.visibility=bvh needs the scene's BVH and this frame has "
+                             "none; VPLs are not occluded\n");
+        mWarnedNoOccupancy = true;
+    }
+    return in.bvhRayIterations;
+}
+
 void VplGi::writeUniforms(int visibility, int gatherOutput) {
     const int tile = mSettings.interleave ? VPL_TILE : 1;
     shader::VplUniforms u{};
     u.counts = glm::ivec4(mVplCount, tile, visibility, gatherOutput);
     u.gather = glm::vec4(clampArea(), float(tile * tile), kFilterDepthTolerance,
             kFilterNormalCosine);
+    u.rays = glm::vec4(mRayOffset, 0.0f, 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
@@ -160,15 +171,20 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                     mSource.occupancyVersion != in.occupancy->version);
     if (stale) resample(in, profiler);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
+    const int bvhRayIterations = visibilityBvh(in);
     mVisibility = occupancy ? VPL_VISIBILITY_CASCADE
-                            : octree ? VPL_VISIBILITY_SVO : VPL_VISIBILITY_NONE;
+                  : octree  ? VPL_VISIBILITY_SVO
+                  : bvhRayIterations > 0 ? VPL_VISIBILITY_BVH
+                                         : VPL_VISIBILITY_NONE;
+    // Shadow rays' push off a surface: 1e-4 of the scene's size, as far in any scene.
+    mRayOffset = 1e-4f * std::max(glm::length(in.scene.bounds().size()), 1e-12f);
     mDebugView = debugViewOf(in.debugView);
     writeUniforms(mVisibility, mDebugView == VPL_DEBUG_VISIBILITY ? VPL_GATHER_VISIBLE_FRACTION
                                                                   : VPL_GATHER_IRRADIANCE);
     mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
     const int subsets = mSettings.interleave ? VPL_TILE * VPL_TILE : 1;
     mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree,
-                            (mVplCount + subsets - 1) / subsets},
+                            (mVplCount + subsets - 1) / subsets, bvhRayIterations},
             profiler);
     mFilter.execute({mGather.result(), mGBuffer, mUniforms}, profiler);
     mHasOutput = mGBuffer.size().x > 0;
@@ -203,9 +219,7 @@ VplReport VplGi::report() const {
 
 std::string VplGi::status() const {
     if (!mSvo.failure().empty()) return "vpl: " + mSvo.failure();
-    const char* visibility = mSettings.visibility == VPL_VISIBILITY_CASCADE ? "cascade"
-                             : mSettings.visibility == VPL_VISIBILITY_SVO   ? "svo"
-                                                                            : "none";
+    const std::string visibility = visibilityName(mSettings);
     return "vpl " + std::to_string(mVplCount) + " VPLs, " +
            (mSettings.interleave ? "4x4 tiles" : "every VPL per pixel") + ", visibility " +
            visibility + ", B " + std::to_string(clampArea()) + " m^2" +

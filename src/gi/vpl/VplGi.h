@@ -70,6 +70,8 @@ private:
     void addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
             gl::GpuProfiler& profiler);
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
+    // The loop iterations of a ray through the scene's BVH (vpl.visibility=bvh), or 0.
+    int visibilityBvh(const GiFrameInputs& in);
     void writeUniforms(int visibility, int gatherOutput);
 
     VplSettings mSettings;
@@ -81,6 +83,7 @@ private:
     bool mWarnedNoOccupancy = false;
     bool mHasOutput = false;
     int mVisibility = VPL_VISIBILITY_NONE;   // VPL_VISIBILITY_* of this frame's gather
+    float mRayOffset = 0.0f;                 // VplUniforms rays.x
     int mDebugView = -1;   // VPL_DEBUG_* shown this frame, -1 = none
     VplReport mLastResampling;   // its RSM and sampling fields
 
