@@ -62,7 +62,7 @@ bool VplGi::configure(const Settings& settings, std::string& error) {
         mSource.valid = false;
     }
     mGlossyMaterials = settings.glossyMaterials();
-    if (s.visibility != mSettings.visibility) mWarnedNoOccupancy = false;
+    if (s.visibility != mSettings.visibility) mWarnedNoVisibility = false;
     mSettings = s;
     return true;
 }
@@ -129,20 +129,20 @@ void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
 
 const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
     if (mSettings.visibility != VPL_VISIBILITY_CASCADE) return nullptr;
-    if (!in.occupancy && !mWarnedNoOccupancy) {
+    if (!in.occupancy && !mWarnedNoVisibility) {
         std::fprintf(stderr, "vpl: vpl.visibility=cascade needs a voxel occupancy volume and "
                              "this frame has none; VPLs are not occluded\n");
-        mWarnedNoOccupancy = true;
+        mWarnedNoVisibility = true;
     }
     return in.occupancy;
 }
 
 int VplGi::visibilityBvh(const GiFrameInputs& in) {
     if (mSettings.visibility != VPL_VISIBILITY_BVH) return 0;
-    if (in.bvhRayIterations <= 0 && !mWarnedNoOccupancy) {
+    if (in.bvhRayIterations <= 0 && !mWarnedNoVisibility) {
         std::fprintf(stderr, "vpl: vpl.visibility=bvh needs the scene's BVH and this frame has "
                              "none; VPLs are not occluded\n");
-        mWarnedNoOccupancy = true;
+        mWarnedNoVisibility = true;
     }
     return in.bvhRayIterations;
 }

@@ -80,7 +80,7 @@ private:
     Source mSource;
     int mVplCount = 0;
     int mSecondGenerationCount = 0;
-    bool mWarnedNoOccupancy = false;
+    bool mWarnedNoVisibility = false;   // a missing occupancy or BVH is reported once
     bool mHasOutput = false;
     int mVisibility = VPL_VISIBILITY_NONE;   // VPL_VISIBILITY_* of this frame's gather
     float mRayOffset = 0.0f;                 // VplUniforms rays.x
