@@ -151,6 +151,26 @@ void printVplMemory(const scene::Scene& scene, const std::vector<scene::Light>& 
     }
 }
 
+// The BVH that atlas.visibility=bvh and vpl.visibility=bvh trace: the shadow rays' tree,
+// built once for all of them.
+void printGiRayMemory(const scene::Scene& scene, const std::vector<scene::Light>& lights,
+        const Settings& settings) {
+    const bool atlas = settings.atlas.visibility == ATLAS_VISIBILITY_BVH;
+    const bool vpl = settings.vpl.visibility == VPL_VISIBILITY_BVH;
+    if (!atlas && !vpl) return;
+    Settings rays = settings;
+    rays.shadow.enabled = true;
+    rays.shadow.method = SHADOW_METHOD_BVH;
+    const render::ShadowMethodReport tree = render::plannedShadowMethod(scene, lights, rays);
+    const bool shared = settings.shadow.enabled && settings.shadow.method == SHADOW_METHOD_BVH;
+    const bool small = tree.bytes < (std::size_t(1) << 20);
+    std::printf("  GI rays: %s%s%s trace%s the %s, at most %.2f %s%s\n",
+            atlas ? "atlas.visibility=bvh" : "", atlas && vpl ? " and " : "",
+            vpl ? "vpl.visibility=bvh" : "", atlas && vpl ? "" : "s", tree.structure.c_str(),
+            small ? double(tree.bytes) / 1024.0 : mebibytes(tree.bytes), small ? "KiB" : "MiB",
+            shared ? " (the shadows' own)" : "");
+}
+
 } // namespace
 
 int runInfo(const Config& config) {
@@ -178,6 +198,7 @@ int runInfo(const Config& config) {
     const render::ShadowMethodReport shadows =
             render::plannedShadowMethod(scene, render::plannedLights(scene.lights, plan), planned);
     std::printf("  %s\n", render::describeShadowMethod(shadows).c_str());
+    printGiRayMemory(scene, render::plannedLights(scene.lights, plan), planned);
     printVplMemory(scene, render::plannedLights(scene.lights, plan), planned);
     return 0;
 }

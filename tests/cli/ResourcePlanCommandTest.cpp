@@ -48,6 +48,20 @@ TEST(ResourcePlanCommand, InfoPrintsBothPlans) {
     EXPECT_TRUE(fixed.err.empty()) << fixed.err;
 }
 
+// The BVH that the atlas' and the VPLs' rays trace is in the plan, once for both, and only
+// when one of them asks for it.
+TEST(ResourcePlanCommand, InfoPrintsTheBvhTheGiRaysTrace) {
+    const ProcessResult both = runVoxatlas({"info", kBox, "--set", "atlas.visibility=bvh", "--set",
+            "vpl.visibility=bvh"});
+    ASSERT_EQ(both.exitCode, 0) << both.err;
+    EXPECT_NE(both.out.find("GI rays: atlas.visibility=bvh and vpl.visibility=bvh trace the BVH "
+                            "over "),
+            std::string::npos) << both.out;
+    const ProcessResult none = runVoxatlas({"info", kBox});
+    ASSERT_EQ(none.exitCode, 0) << none.err;
+    EXPECT_EQ(none.out.find("GI rays"), std::string::npos) << none.out;
+}
+
 // A value for a key the adaptive plan sizes is what the user wants: it selects the fixed plan
 // and says so on stderr, never silently replaced; with render.plan=adaptive it is refused.
 TEST(ResourcePlanCommand, AKeyTheAdaptivePlanSizesSelectsTheFixedPlan) {
