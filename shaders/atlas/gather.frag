@@ -27,7 +27,8 @@
 // arrives against its normal to the back side's sum. With VISIBILITY_VOXEL each pair is
 // weighted by the voxel occupancy's transmittance (common/voxel_visibility.glsl); with
 // VISIBILITY_BVH a ray through the scene's triangles decides it (common/bvh.glsl), each end
-// pushed half a texel edge off its surface, as the voxel march pushes them one voxel.
+// pushed half a texel edge off its surface and the first texel edge at each end not tested,
+// as the voxel march pushes the ends one voxel and lets their voxels pass.
 // Output: the sums of both sides (before the 1/N normalisation) added to the running sums by
 // blending.
 #include "atlas_common.glsl"
@@ -39,16 +40,22 @@
 #ifdef VISIBILITY_BVH
 #include "../common/bvh.glsl"
 
-// How far a texel's rays start off its surface: half the edge of the area a it stands for.
-float rayOffset(float a) { return 0.5 * sqrt(max(a, 0.0)); }
+// The edge of the patch of area a that a texel stands for.
+float texelEdge(float a) { return sqrt(max(a, 0.0)); }
 
-// 1 where nothing lies between the two texels, each seen from the side given.
+// 1 where nothing lies between the two texels, each seen from the side given. Each end starts
+// half a texel edge off its surface, and the ray ignores what lies within one texel edge of
+// either end: a texel's centre can lie up to half a texel past its triangle's edge (the
+// gutter), where a ray from it would start behind the wall meeting it at a corner and every
+// corner texel would be dark (the two rooms: relative RMSE 0.055 instead of 0.040).
 float rayVisibility(vec3 x, vec3 xSide, float xArea, vec3 y, vec3 ySide, float yArea) {
-    vec3 a = x + xSide * rayOffset(xArea);
-    vec3 d = y + ySide * rayOffset(yArea) - a;
+    float edgeX = texelEdge(xArea), edgeY = texelEdge(yArea);
+    vec3 a = x + xSide * (0.5 * edgeX);
+    vec3 d = y + ySide * (0.5 * edgeY) - a;
     float len = length(d);
-    if (len <= 0.0) return 1.0;
-    return bvhOccluded(a, d / len, len * (1.0 - 1e-4)) ? 0.0 : 1.0;
+    if (len <= edgeX + edgeY) return 1.0;
+    vec3 dir = d / len;
+    return bvhOccluded(a + dir * edgeX, dir, (len - edgeX - edgeY) * (1.0 - 1e-4)) ? 0.0 : 1.0;
 }
 #endif
 
@@ -92,7 +99,8 @@ vec3 skyIrradiance(vec3 x, vec3 n, float area, uint seed) {
                 levelVoxelSize(coarsest) * float(voxelResolution()));
         visible += toBoundary > 0.0 ? voxelTransmittance(x, n, x + w * toBoundary, -w) : 1.0;
 #elif defined(VISIBILITY_BVH)
-        visible += bvhOccluded(x + n * rayOffset(area), w, 1e30) ? 0.0 : 1.0;
+        float edge = texelEdge(area);
+        visible += bvhOccluded(x + n * (0.5 * edge) + w * edge, w, 1e30) ? 0.0 : 1.0;
 #else
         visible += 1.0;
 #endif

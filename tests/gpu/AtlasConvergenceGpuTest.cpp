@@ -96,7 +96,7 @@ TEST_F(AtlasGpuTest, FinerOccupancyBlocksLessOfTheFloorsLight) {
 // Rays through the scene's triangles (atlas.visibility=bvh) block only what the blocks hide:
 // the occupancy's voxels also block segments passing beside the blocks' rims, so the floor,
 // much of whose light passes close to them, receives more with rays (measured on llvmpipe:
-// +7.3 % red), and the same samples without any visibility give more still.
+// +7.7 % red), and the same samples without any visibility give more still.
 TEST_F(AtlasGpuTest, RayVisibilityBlocksLessOfTheFloorsLightThanTheOccupancy) {
     const scene::Scene scene = loadCornellBox();
     const glm::dvec3 voxels = floorMean(scene, 250, 1, ATLAS_VISIBILITY_VOXEL);
