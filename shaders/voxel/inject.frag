@@ -21,6 +21,7 @@ layout(early_fragment_tests) in;
 #include "../common/light_view.glsl"
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
+#define VOXEL_DIRECTIONAL_SUMS
 #include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
 #include "voxel_reflectance.glsl"
@@ -30,7 +31,6 @@ layout(location = LOC_INJECT_FOOTPRINT) uniform float pixelFootprint;
 layout(location = LOC_INJECT_LIGHT) uniform int lightIndex;
 
 layout(binding = BIND_IMG_VOXEL_HELPER, rgba16f) coherent uniform image3D voxelHelper;
-layout(binding = BIND_IMG_VOXEL_DIRECTIONAL, rgba16f) coherent uniform image3D voxelDirectional;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -60,15 +60,6 @@ void main() {
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 previous = imageLoad(voxelHelper, texel);
         imageStore(voxelHelper, texel, roundToHalf(vec4(previous.rgb + flux, 1.0), dither));
-        if (voxel.grid.z != 0) {
-            for (int face = 0; face < VOXEL_FACES; ++face) {
-                float projection = faceProjection(n, face);
-                if (projection <= 0.0) continue;
-                ivec3 faceTexel = directionalTexel(texel, face);
-                vec4 sums = imageLoad(voxelDirectional, faceTexel);
-                imageStore(voxelDirectional, faceTexel,
-                        roundToHalf(sums + vec4(flux * projection, 0.0), dither));
-            }
-        }
+        if (voxel.grid.z != 0) addToFacingFaces(texel, n, vec4(flux, 0.0), dither);
     })
 }

@@ -47,4 +47,24 @@ int faceSeenAlong(vec3 dir, int axis) {
     return 2 * axis + (dir[axis] > 0.0 ? 1 : 0);
 }
 
+#ifdef VOXEL_DIRECTIONAL_SUMS
+#include "voxel_lock.glsl"
+
+// The per-face sums that voxelization (areas) and injection (flux) add to, under the voxel's
+// lock (voxel_lock.glsl); directional_build.comp turns them into the directional voxels.
+layout(binding = BIND_IMG_VOXEL_DIRECTIONAL, rgba16f) coherent uniform image3D voxelDirectional;
+
+// Adds `amount` times the share each face sees of a surface of unit normal n to the faces of
+// the cascade texel `texel` it faces, rounded with the lock's dither u (roundToHalf).
+void addToFacingFaces(ivec3 texel, vec3 n, vec4 amount, float u) {
+    for (int face = 0; face < VOXEL_FACES; ++face) {
+        float projection = faceProjection(n, face);
+        if (projection <= 0.0) continue;
+        ivec3 faceTexel = directionalTexel(texel, face);
+        vec4 sums = imageLoad(voxelDirectional, faceTexel);
+        imageStore(voxelDirectional, faceTexel, roundToHalf(sums + amount * projection, u));
+    }
+}
+#endif
+
 #endif

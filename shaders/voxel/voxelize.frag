@@ -9,6 +9,7 @@
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "../common/voxel_cascade.glsl"
+#define VOXEL_DIRECTIONAL_SUMS
 #include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
 #include "voxel_reflectance.glsl"
@@ -16,7 +17,6 @@
 layout(binding = BIND_IMG_VOXEL_ALBEDO, rgba16f) coherent uniform image3D voxelAlbedo;
 layout(binding = BIND_IMG_VOXEL_NORMAL, rgba8_snorm) coherent uniform image3D voxelNormal;
 layout(binding = BIND_IMG_VOXEL_IRRADIANCE, rgba16f) coherent uniform image3D voxelIrradiance;
-layout(binding = BIND_IMG_VOXEL_DIRECTIONAL, rgba16f) coherent uniform image3D voxelDirectional;
 
 in VertexData { VERTEX_DATA_MEMBERS } vin;
 
@@ -52,15 +52,6 @@ void main() {
         vec3 projected = voxel.raster.z != 0.0 ? area * abs(n) : vec3(0.0);
         imageStore(voxelIrradiance, texel,
                 roundToHalf(irradiance + vec4(projected, area), dither));
-        if (voxel.grid.z != 0) {
-            for (int face = 0; face < VOXEL_FACES; ++face) {
-                float projection = faceProjection(n, face);
-                if (projection <= 0.0) continue;
-                ivec3 faceTexel = directionalTexel(texel, face);
-                vec4 sums = imageLoad(voxelDirectional, faceTexel);
-                imageStore(voxelDirectional, faceTexel,
-                        roundToHalf(sums + vec4(0.0, 0.0, 0.0, area * projection), dither));
-            }
-        }
+        if (voxel.grid.z != 0) addToFacingFaces(texel, n, vec4(0.0, 0.0, 0.0, area), dither);
     })
 }
