@@ -80,7 +80,8 @@ layout(location = LOC_ATLAS_GATHER_RANGE) uniform ivec4 gatherRange;
 // This draw's share of the sky's irradiance on the side facing n (atlas.sky: its radiance and
 // how many directions): cosine-distributed directions, stratified in their polar coordinate
 // and new for each receiver and set, each seeing the sky unless the voxel occupancy blocks it
-// on its way out of the cascade (without voxel visibility nothing blocks it). The draws' shares
+// on its way out of the cascade, or a triangle its ray meets (without visibility nothing
+// blocks it). The draws' shares
 // add up to the sky's irradiance.
 vec3 skyIrradiance(vec3 x, vec3 n, float area, uint seed) {
     int directions = int(atlas.sky.w);
@@ -165,13 +166,13 @@ void main() {
         } else {
             contribution = radiance * cosX;
         }
-#ifdef VISIBILITY_VOXEL
+#if defined(VISIBILITY_VOXEL) || defined(VISIBILITY_BVH)
         vec3 receiverSide = receiverBack ? -nx : nx;
         vec3 senderSide = senderBack ? -senderNormal.xyz : senderNormal.xyz;
+#endif
+#ifdef VISIBILITY_VOXEL
         contribution *= voxelTransmittance(x, receiverSide, y.xyz, senderSide);
 #elif defined(VISIBILITY_BVH)
-        vec3 receiverSide = receiverBack ? -nx : nx;
-        vec3 senderSide = senderBack ? -senderNormal.xyz : senderNormal.xyz;
         contribution *= rayVisibility(x, receiverSide, receiverPosition.w, y.xyz, senderSide, y.w);
 #endif
         if (receiverBack) sumBack += contribution;

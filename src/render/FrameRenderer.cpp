@@ -214,8 +214,7 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
     frame.screen = glm::vec4(glm::vec2(mRenderSize), 0.0f, 0.0f);
     frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, mSettings.voxel.depthUpsample ? 1 : 0);
     frame.sky = glm::vec4(scene::skyRadiance(mLights) * mScene->exposure(), 0.0f);
-    // Shadow rays start 1e-4 of the scene's size off the surface, as far in any scene.
-    const float offset = 1e-4f * std::max(glm::length(mScene->bounds().size()), 1e-12f);
+    const float offset = mScene->bounds().rayOffset();
     frame.shadowing = glm::vec4(float(switches.shadowMethod), float(mSettings.shadow.rays), offset, 0.0f);
     glNamedBufferSubData(mFrameUniforms.id(), 0, sizeof frame, &frame);
 }

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -30,6 +31,9 @@ struct Aabb {
     }
     glm::vec3 center() const { return 0.5f * (min + max); }
     glm::vec3 size() const { return empty() ? glm::vec3(0.0f) : max - min; }
+    // How far rays start off a surface (shadow rays, the VPLs' rays through the BVH): 1e-4 of
+    // the scene's diagonal, as far in any scene.
+    float rayOffset() const { return 1e-4f * std::max(glm::length(size()), 1e-12f); }
 };
 
 // Decoded texture pixels, always RGBA8. Colour textures are stored as authored (sRGB

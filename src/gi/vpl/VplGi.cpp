@@ -176,8 +176,7 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                   : octree  ? VPL_VISIBILITY_SVO
                   : bvhRayIterations > 0 ? VPL_VISIBILITY_BVH
                                          : VPL_VISIBILITY_NONE;
-    // Shadow rays' push off a surface: 1e-4 of the scene's size, as far in any scene.
-    mRayOffset = 1e-4f * std::max(glm::length(in.scene.bounds().size()), 1e-12f);
+    mRayOffset = in.scene.bounds().rayOffset();
     mDebugView = debugViewOf(in.debugView);
     writeUniforms(mVisibility, mDebugView == VPL_DEBUG_VISIBILITY ? VPL_GATHER_VISIBLE_FRACTION
                                                                   : VPL_GATHER_IRRADIANCE);
