@@ -6,8 +6,9 @@ rounds; prints each variant's trace-pass time as a ratio to the unchanged shader
 
 The variants are text substitutions in a copy of shaders/ (VOXATLAS_SHADER_DIR); a
 substitution that no longer matches stops the script, so the profile cannot silently time
-the unchanged shader. With --counts it also renders each shader's step counters instead of
-its light (the "counts" variant) and prints the mean per cone.
+the unchanged shader. With --counts it also renders counters instead of light (the "counts"
+variant: what each iteration of a cone's walk did, and the opacity it ends with) and prints
+their mean per cone.
 
 Usage: /usr/bin/python3 scripts/bench_trace.py [--rounds N] [--frames N] [--size WxH]
        [--set key=value ...] [--against DIR] [--counts] [--check]
@@ -37,6 +38,30 @@ CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
 RING_LOOP = "for (int i = 0; i < 8; ++i) {"
 LIGHT_CALL = "reflected = coarsestLight("
 
+COUNTER_DECL_TEXT = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
+# The trace of Friduric's demo (the peer of results-performance.md) over the coarsest level:
+# steps of one cone diameter from two voxels out, each one trilinear read of the radiance
+# pyramid at the mip as wide as the cone, composited front to back.
+PEER_TRACE = """
+    {
+        int peerLevel = voxelLevels() - 1;
+        float peerVoxel = levelVoxelSize(peerLevel);
+        float peerDist = 2.0 * peerVoxel;
+        vec3 peerRadiance = vec3(0.0);
+        float peerOpacity = 0.0;
+        while (peerDist < maxDistance && peerOpacity < 0.99) {
+            vec3 uvw = (origin + dir * peerDist - levelOrigin(peerLevel)) / levelExtent(peerLevel);
+            if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
+            float peerDiameter = max(2.0 * tanHalf * peerDist, peerVoxel);
+            vec4 s = textureLod(voxelPyramidTexture, uvw, log2(peerDiameter / peerVoxel));
+            peerRadiance += (1.0 - peerOpacity) * s.rgb / PI;
+            peerOpacity += (1.0 - peerOpacity) * s.a;
+            peerDist += peerDiameter;
+        }
+        return peerRadiance + (1.0 - peerOpacity) * frame.sky.rgb;
+    }
+"""
+
 # name -> (what it switches off, [(old, new), ...] in cone_tracing.glsl)
 PROFILE = {
     "no cones": ("every cone (rasterisation, material and set-up remain)", [
@@ -47,27 +72,49 @@ PROFILE = {
     "no light reads": ("the light read where a cone meets a surface (coarsestLight: "
                        "filtered voxels and the pyramid)", [
         (LIGHT_CALL, "reflected = vec3(0.25) + 0.0 * (")]),
+    # Not a part switched off but the whole walk replaced: what the peer's trace costs in
+    # this program (its accuracy: `--make NAME DIR`, then `voxatlas bench --suite quick`
+    # with VOXATLAS_SHADER_DIR=DIR).
+    "peer's trace": ("the walk: a cone samples the radiance pyramid at its own width, one "
+                     "trilinear read per step, each step as long as the cone is wide", [
+        (COUNTER_DECL_TEXT, COUNTER_DECL_TEXT + PEER_TRACE)]),
 }
 
-COUNTER_DECL = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
+COUNTER_DECL = COUNTER_DECL_TEXT
+# What each iteration of a cone's walk did, counted per pixel over its 9 cones.
+COUNTER_NAMES = ["empty blocks crossed", "empty voxels stepped through",
+                 "occupied voxels facing away", "planes the axis missed", "surfaces met",
+                 "finer-level samples", "final opacity"]
 COUNTS = [
-    (COUNTER_DECL, "int gSteps = 0, gFetches = 0, gHits = 0;\n" + COUNTER_DECL),
-    ("coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0);",
-     "coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0); ++gSteps; "
-     "++gFetches;"),
-    ("vec4 plane = texelFetch(voxelNormalTexture, texel, 0);",
-     "vec4 plane = texelFetch(voxelNormalTexture, texel, 0); ++gFetches;"),
-    (LIGHT_CALL, "++gHits; " + LIGHT_CALL),
-    ("VoxelSample s = readLevel(p, level);", "VoxelSample s = readLevel(p, level); "
-     "++gSteps; gFetches += 3;"),
+    (COUNTER_DECL, "float gCount[7] = float[7](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);\n"
+     + COUNTER_DECL),
+    ("diameter = max(2.0 * tanHalf * dist, finest);\n                    continue;",
+     "diameter = max(2.0 * tanHalf * dist, finest);\n                    gCount[0] += 1.0; "
+     "continue;"),
+    ("if (coverage <= 0.0) continue;\n                vec4 plane",
+     "if (coverage <= 0.0) { gCount[1] += 1.0; continue; }\n                vec4 plane"),
+    (": cosine > 0.0) {\n                    continue;",
+     ": cosine > 0.0) {\n                    gCount[2] += 1.0; continue;"),
+    ("slack)) {\n                        continue;",
+     "slack)) {\n                        gCount[3] += 1.0; continue;"),
+    (LIGHT_CALL, "gCount[4] += 1.0; " + LIGHT_CALL),
+    ("VoxelSample s = readLevel(p, level);",
+     "VoxelSample s = readLevel(p, level); gCount[5] += 1.0;"),
+    ("    if (steps < kMaxSteps) radiance += (1.0 - opacity) * frame.sky.rgb;",
+     "    gCount[6] += opacity;\n"
+     "    if (steps < kMaxSteps) radiance += (1.0 - opacity) * frame.sky.rgb;"),
+    # Columns x mod 4 = 0, 1, 2 carry three counters each; 3 carries 1, which calibrates
+    # the read-back (the renderer divides every image by the scene's pre-exposure).
     (TRACE_MAIN,
      "outIndirect = vec4(irradiance, viewDepth);",
-     "outIndirect = vec4(float(gSteps) / 9.0, float(gFetches) / 9.0, float(gHits) / 9.0, "
-     "viewDepth + 0.0 * irradiance.x);"),
-    # The counters reach the image unscaled by the surface's albedo.
+     "int column = int(gl_FragCoord.x) & 3;\n"
+     "    outIndirect = vec4(column == 3 ? vec3(9.0) : vec3(gCount[3 * column], "
+     "column < 2 ? gCount[3 * column + 1] : 0.0, column < 2 ? gCount[3 * column + 2] : 0.0),"
+     " viewDepth + 0.0 * irradiance.x);"),
+    # The counters reach the image unfiltered and unscaled by the surface's albedo.
     (os.path.join("render", "forward.frag"),
      "indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth);",
-     "indirect = upsampledIndirect(indirectTexture, viewDepth);"),
+     "indirect = texelFetch(indirectTexture, ivec2(gl_FragCoord.xy), 0).rgb;"),
 ]
 
 
@@ -85,15 +132,22 @@ def variant_dir(root, name, substitutions, base):
 
 
 def counts(shader_dir, settings, size):
-    """Mean steps, fetches and surfaces met per cone over the traced pixels."""
+    """Mean of each counter per cone over the traced pixels, in COUNTER_NAMES' order."""
     env = dict(os.environ, VOXATLAS_SHADER_DIR=shader_dir)
     options = ["--mode", "voxel", "--output", "indirect", "--camera", il.INSIDE_CAMERA,
                "--set", "render.plan=adaptive", "--set", "voxel.filter=0",
-               "--set", "voxel.trace_scale=1"] + common.size_args(size)
+               "--set", "gi.temporal_filter=0"] + common.size_args(size)
+    settings = dict(settings, **{"voxel.trace_scale": 1})
     image = common.render(common.CORNELL, options + common.settings_args(settings), hdr=True,
                           env=env).image
-    covered = image.sum(axis=2) > 0
-    return image[covered].mean(axis=0)
+    width = image.shape[1] // 4 * 4
+    columns = [image[:, k:width:4] for k in range(4)]
+    covered = columns[3].sum(axis=2) > 0
+    per_cone = columns[3][covered][:, 0].mean()   # 9 cones' worth, as read back
+    means = [columns[k][covered].mean(axis=0) / per_cone for k in range(3)]
+    values = [means[0][0], means[0][1], means[0][2], means[1][0], means[1][1], means[1][2],
+              means[2][0]]
+    return dict(zip(COUNTER_NAMES, values))
 
 
 def parse_size(text):
@@ -115,10 +169,25 @@ def main():
     parser.add_argument("--base", default=SHADERS,
                         help="shader folder the variants start from (default shaders/)")
     parser.add_argument("--counts", action="store_true")
+    parser.add_argument("--make", nargs=2, metavar=("VARIANT", "DIR"),
+                        help="only write one variant's shaders to DIR (e.g. to score it with "
+                        "VOXATLAS_SHADER_DIR=DIR voxatlas bench --suite quick) and exit")
     parser.add_argument("--check", action="store_true",
                         help="only make every variant's shaders (each substitution must still "
                         "match) and exit: ctest's lint.bench_trace_variants")
     args = parser.parse_args()
+    if args.make:
+        name, target = args.make
+        variants = {**PROFILE, "counts": (None, COUNTS)}
+        if name not in variants:
+            parser.error(f"no variant '{name}' (variants: {', '.join(variants)})")
+        if os.path.exists(target):
+            parser.error(f"{target} exists; give a new folder")
+        parent = os.path.dirname(os.path.abspath(target))
+        with tempfile.TemporaryDirectory(dir=parent) as tmp:
+            shutil.move(variant_dir(tmp, name, variants[name][1], args.base), target)
+        print(f"wrote variant '{name}' to {target}")
+        return
     if args.check:
         with tempfile.TemporaryDirectory() as tmp:
             for name, (_, subs) in {**PROFILE, "counts": (None, COUNTS)}.items():
@@ -139,9 +208,9 @@ def main():
                 dirs[name] = variant_dir(tmp, name, subs, args.base)
         if args.counts:
             step_dir = variant_dir(tmp, "counts", COUNTS, args.base)
-            steps, fetches, hits = counts(step_dir, settings, args.size)
-            print(f"per cone: {steps:.1f} steps, {fetches:.1f} fetches (coverage + normal "
-                  f"texels, 3 per finer-level sample), {hits:.2f} surfaces met")
+            per_cone = counts(step_dir, settings, args.size)
+            print("per cone: " + ", ".join(f"{name} {value:.2f}"
+                                           for name, value in per_cone.items()))
         load_start = il.load_average()
         bins = {name: common.BIN for name in dirs}
         if args.against_bin:
