@@ -189,6 +189,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 1, 16, [](Settings& s) -> int& { return s.giBounces; }),
         powerOfTwoSetting("voxel.resolution", "voxels per axis of each cascade level (power of two)",
                 4, 256, Zero::Refused, [](Settings& s) -> int& { return s.voxel.resolution; }),
+        powerOfTwoSetting("voxel.one_level_limit",
+                "render.plan=adaptive: a scene that one scene-centred level of at most this many "
+                "voxels per axis holds at the finest voxel the plan needs gets that level instead "
+                "of a camera-centred cascade (power of two; 0 = always a cascade)",
+                4, 256, Zero::Allowed, [](Settings& s) -> int& { return s.voxel.oneLevelLimit; }),
         powerOfTwoSetting("voxel.occupancy_resolution",
                 "voxels per axis of the occupancy that atlas.visibility=voxel, "
                 "vpl.visibility=cascade and shadow.method=voxel march (power of two; 0 = "

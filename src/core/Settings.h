@@ -34,6 +34,9 @@ struct VoxelSettings {
     int occupancyResolution = 0;  // voxel.occupancy_resolution: voxels per axis of the occupancy
                                   // the atlas' and VPLs' visibility and voxel shadows march;
                                   // 0 = voxel.resolution
+    int oneLevelLimit = 128;      // voxel.one_level_limit: the adaptive plan holds a scene in one
+                                  // scene-centred level of at most this many voxels per axis
+                                  // at its finest voxel, not a cascade; 0 = always a cascade
     int levels = 3;               // voxel.cascades: l, nested levels, each twice the previous edge
     int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
     bool rasterPerLevel = false;  // voxel.raster_per_level: each level rasterized over its

@@ -39,6 +39,7 @@ struct VoxelPlan {
     bool sceneCentred = false;
     bool clampCentre = false;
     int injectResolution = 0;    // light-view pixels per side
+    int multiplier = 0;          // voxelization raster pixels per voxel edge (0: the setting's)
     [[nodiscard]] float voxelSize(int level) const {
         return finestExtent * float(1 << level) / float(resolution);
     }

@@ -1,5 +1,6 @@
 // The resource plan (render/ResourcePlan.h) for the scenes users render: the Cornell box gets
-// one scene-centred level, Sponza a camera-centred cascade reaching all of it; the fixed plan
+// one scene-centred level of v^3, Sponza one of 128^3 at the finest voxel a cascade would
+// have, and a cascade reaching all of it where one level would need more; the fixed plan
 // reports the thesis' allocation as given; lights that cannot reach the scene are left out.
 #include "render/ResourcePlan.h"
 #include "Sponza.h"
@@ -58,10 +59,12 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
     EXPECT_EQ(plan.lights.size(), 1u);
 }
 
-TEST(ResourcePlan, SponzaIsACameraCascadeReachingAllOfIt) {
+TEST(ResourcePlan, SponzaWithoutTheOneLevelIsACameraCascadeReachingAllOfIt) {
     VOXATLAS_SPONZA_OR_SKIP(path);
     const scene::Scene sponza = test::loadTestScene(path);
-    const ResourcePlan plan = planResources(sponza, sponza.lights, adaptive(32), startEye(sponza));
+    Settings cascade = adaptive(32);
+    cascade.voxel.oneLevelLimit = 0;
+    const ResourcePlan plan = planResources(sponza, sponza.lights, cascade, startEye(sponza));
     const glm::vec3 size = sponza.bounds.size();
     const float shortest = std::min(size.x, std::min(size.y, size.z));
     const float longest = std::max(size.x, std::max(size.y, size.z));
@@ -80,11 +83,57 @@ TEST(ResourcePlan, SponzaIsACameraCascadeReachingAllOfIt) {
     EXPECT_GT(plan.surfaceArea, 1000.0);
     EXPECT_GT(plan.atlasResolution, 256);
     // A finer voxel.size adds levels, never voxels per level.
-    Settings finer = adaptive(32);
+    Settings finer = cascade;
     finer.voxel.size = plan.voxel.voxelSize(0) / 4.0f;
     const ResourcePlan fine = planResources(sponza, sponza.lights, finer, startEye(sponza));
     EXPECT_EQ(fine.voxel.levels, plan.voxel.levels + 2);
     EXPECT_EQ(fine.voxel.resolution, 32);
+}
+
+TEST(ResourcePlan, SponzaIsOneSceneCentredLevelAtTheCascadesFinestVoxel) {
+    VOXATLAS_SPONZA_OR_SKIP(path);
+    const scene::Scene sponza = test::loadTestScene(path);
+    Settings cascadeSettings = adaptive(32);
+    cascadeSettings.voxel.oneLevelLimit = 0;
+    const ResourcePlan cascade =
+            planResources(sponza, sponza.lights, cascadeSettings, startEye(sponza));
+    const ResourcePlan plan = planResources(sponza, sponza.lights, adaptive(32), startEye(sponza));
+    EXPECT_EQ(plan.voxel.levels, 1);
+    EXPECT_TRUE(plan.voxel.sceneCentred);
+    EXPECT_EQ(plan.voxel.resolution, 128);
+    EXPECT_LE(plan.voxel.voxelSize(0), cascade.voxel.voxelSize(0) * 1.0001f);
+    EXPECT_GT(plan.voxel.voxelSize(0), 0.5f * cascade.voxel.voxelSize(0));
+    // The level covers the whole scene.
+    const glm::vec3 size = sponza.bounds.size();
+    EXPECT_GE(plan.voxel.finestExtent, std::max(size.x, std::max(size.y, size.z)));
+    // Its raster keeps the cascade's size, v x voxel.multiplier pixels a side.
+    EXPECT_EQ(plan.voxel.resolution * plan.voxel.multiplier, 32 * Settings{}.voxel.multiplier);
+    const Settings applied = applyPlan(adaptive(32), plan);
+    EXPECT_EQ(applied.voxel.resolution, 128);
+    EXPECT_EQ(applied.voxel.levels, 1);
+    EXPECT_EQ(applied.voxel.multiplier, plan.voxel.multiplier);
+    // 64 cascade levels' worth of voxels: what one level at the finest voxel costs.
+    EXPECT_GT(plan.voxelBytes(), 15 * cascade.voxelBytes());
+    // A finest voxel one level of 128^3 cannot hold the scene at keeps the cascade.
+    Settings finer = adaptive(32);
+    finer.voxel.size = cascade.voxel.voxelSize(0) / 4.0f;
+    const ResourcePlan fine = planResources(sponza, sponza.lights, finer, startEye(sponza));
+    EXPECT_EQ(fine.voxel.levels, cascade.voxel.levels + 2);
+    EXPECT_EQ(fine.voxel.resolution, 32);
+    EXPECT_FALSE(fine.voxel.sceneCentred);
+}
+
+TEST(ResourcePlan, OneLevelWhereItIsNoLargerThanTheLimit) {
+    const scene::Scene rooms = test::loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
+    Settings s = adaptive(32);
+    for (const int limit : {0, 32, 64, 128}) {
+        s.voxel.oneLevelLimit = limit;
+        const ResourcePlan plan = planResources(rooms, rooms.lights, s, startEye(rooms));
+        // The rooms need 64 voxels a side at the cascade's finest voxel.
+        EXPECT_EQ(plan.voxel.levels, limit >= 64 ? 1 : 3) << "limit " << limit;
+        EXPECT_EQ(plan.voxel.resolution, limit >= 64 ? 64 : 32) << "limit " << limit;
+        EXPECT_EQ(plan.voxel.multiplier, limit >= 64 ? 4 : 0) << "limit " << limit;
+    }
 }
 
 TEST(ResourcePlan, ApplyWritesThePlanIntoTheSettings) {
