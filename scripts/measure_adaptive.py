@@ -13,6 +13,8 @@ About 8 minutes on 2 idle cores; progress goes to stderr.
 import argparse
 import math
 import os
+import re
+import subprocess
 import sys
 import time
 
@@ -50,8 +52,15 @@ def voxel_bytes(memory):
         v for k, v in memory.items() if k.startswith("voxel/static/"))
 
 
-def cascade_levels(memory, v):
-    return round(memory["voxel/albedo"] / (8 * v ** 3))
+def plan_shape(scene, plan, v):
+    """The voxels the plan gives the scene, as `voxatlas info` prints them: "R^3 x L"."""
+    cmd = [common.BIN, "info", scene, "--set", f"render.plan={plan}",
+           "--set", f"voxel.resolution={v}"]
+    text = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    match = re.search(r"voxel\s+(\d+)\^3 x (\d+) level", text)
+    if not match:
+        sys.exit(f"measure_adaptive.py: no voxel plan in the output of {' '.join(cmd)}")
+    return f"{match.group(1)}^3 x {match.group(2)}"
 
 
 def measure_caching(say, sponza):
@@ -136,17 +145,18 @@ def measure_memory(say, sponza):
                 memory = voxel_bytes(report)
                 rmse, energy = common.errors(voxel.image, reference, mask)
                 results[name, plan, v] = (memory, rmse, energy)
-                levels[name, plan, v] = cascade_levels(report, v)
+                levels[name, plan, v] = plan_shape(scene, plan, v)
     say("## (b) Voxel memory: the adaptive plan against the thesis' fixed allocation\n")
     say(f"Indirect light of voxel GI against the path tracer (one bounce, {REFERENCE_SPP} spp),")
     say("relative RMSE and energy ratio over the reference's geometry pixels, for")
     say("`render.plan=fixed` (v^3 x 3 levels centred on the camera, the finest level's edge from")
     say("the start camera, as in the thesis) and `render.plan=adaptive`, the default")
-    say("(render/ResourcePlan.h: one scene-centred level for a compact scene, else camera-centred")
-    say("levels kept inside the scene, as many as reach all of it; `voxatlas info SCENE`")
-    say("prints it). Memory is the cascade's textures (32 bytes per voxel and the radiance")
+    say("(render/ResourcePlan.h: one scene-centred level of v^3 for a compact scene, one of up to")
+    say("`voxel.one_level_limit`^3 where that holds the scene at the finest voxel, else")
+    say("camera-centred levels kept inside the scene, as many as reach all of it; `voxatlas info")
+    say("SCENE` prints it; the voxels column says what it gave). Memory is the cascade's textures (32 bytes per voxel and the radiance")
     say("pyramid); the trace targets, which follow the output size, are left out.\n")
-    say("| scene | plan | v | levels | voxel memory | relative RMSE | energy ratio |")
+    say("| scene | plan | v | voxels | voxel memory | relative RMSE | energy ratio |")
     say("|---|---|---|---|---|---|---|")
     for (name, plan, v), (memory, rmse, energy) in results.items():
         say(f"| {name} | {plan} | {v} | {levels[name, plan, v]} | {common.mib(memory)} "
@@ -167,13 +177,13 @@ def measure_memory(say, sponza):
         say(f"| {name} | {target:.3f} | {cell['fixed']} | {cell['adaptive']} | {ratio} |")
     say("")
     plot(results, scenes)
-    summary(say, results, scenes)
+    summary(say, results, levels, scenes)
     say("![relative RMSE against voxel memory, fixed and adaptive plans]"
         "(images/adaptive_memory.png)\n")
     return results
 
 
-def summary(say, results, scenes):
+def summary(say, results, levels, scenes):
     """What the table shows, in numbers from this run."""
     for name, *_ in scenes:
         fixed = {v: results[name, "fixed", v] for v in RESOLUTIONS}
@@ -203,9 +213,9 @@ def summary(say, results, scenes):
             "the reference's indirect energy at every resolution (as in the bench,")
         say(f"docs/results/). The fixed cascade's error {trend('fixed')}; the adaptive "
             f"plan's {trend('adaptive')},")
+        shapes = ", ".join(f"{levels['Sponza', 'adaptive', v]} at v = {v}" for v in RESOLUTIONS)
         say(f"v = {', '.join(str(v) for v in RESOLUTIONS)}. The adaptive plan spends up to "
-            f"x{extra:.2f} the memory there, on")
-        say("a fourth level that reaches the whole atrium from anywhere in it.")
+            f"x{extra:.2f} the memory there ({shapes}).")
     say("")
 
 
