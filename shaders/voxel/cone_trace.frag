@@ -39,8 +39,8 @@ void main() {
     // path tracer and the forward pass (the winding picks the wrong side where normals point
     // against it).
     if (dot(n, frame.cameraPosition.xyz - vin.position) < 0.0) n = -n;
-    // Leave the surface's own voxel before the first sample.
-    vec3 origin = vin.position + n * levelVoxelSize(level);
+    // Leave the surface's own voxel before the first sample: voxel.cone_offset voxels out.
+    vec3 origin = vin.position + n * (voxel.smoothing.w * levelVoxelSize(level));
     // With voxel.jitter the ring turns by a 4x4 ordered-dither fraction of its 45-degree
     // spacing, so neighbouring pixels sample 16 different ring directions; the filter pass
     // averages them back into a smooth result.

@@ -102,6 +102,23 @@ TEST_F(VoxelSuiteGpuTest, OneLevelKeepsTheDarkRoomUnderFivePercent) {
     EXPECT_GT(leak[0], 1.5 * leak[1]);
 }
 
+// voxel.cone_offset moves the cones' origin off the surface: two voxels instead of one let
+// the Cornell box's cones pass the voxels where its walls meet, and the box gathers more of
+// its light (96x96 against the path tracer: energy 0.966 at one voxel, 1.007 at two).
+TEST_F(VoxelSuiteGpuTest, LargerConeOffsetGathersMoreOfTheCornellBoxsLight) {
+    const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_classic.gltf");
+    Settings settings;
+    settings.specular = 0.0f;
+    settings.voxel.coneOffset = 1.0f;
+    const double near = meanIndirect(scene, settings, 0);
+    settings.voxel.coneOffset = 2.0f;
+    const double far = meanIndirect(scene, settings, 0);
+    std::printf("Cornell box, mean indirect light: cone offset 1 voxel %.4f, 2 voxels %.4f\n",
+            near, far);
+    ASSERT_GT(near, 0.0);
+    EXPECT_GT(far / near, 1.02);
+}
+
 // A closed white box around a point light: every wall is lit and sees only lit walls. The
 // thesis' coverage propagation (the mean of 8 children) halved each wall's opacity per cascade
 // level, so cones saw the walls of the coarser levels half transparent and half as bright, and

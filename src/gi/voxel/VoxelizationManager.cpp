@@ -124,7 +124,7 @@ void VoxelizationManager::writeUniforms() {
             ? std::max(std::round(float(mSettings.filterRadius) * mSettings.traceScale / 0.5f), 1.0f)
             : 0.0f;
     u.smoothing = glm::vec4(filterTexels, mSettings.jitter ? 1.0f : 0.0f,
-            std::log2(mSettings.footprint), 0.0f);
+            std::log2(mSettings.footprint), mSettings.coneOffset);
     // One raster over the coarsest level, or one per level over its own extent
     // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
     const float rasterPixel = 1.0f / float(mSettings.multiplier);
