@@ -89,9 +89,13 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
     occupancySettings.voxel.projectedAreas = true;
     // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
     if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
-    if (mSettings.voxel.occupancyResolution > 0) {
-        occupancySettings.voxel.resolution = mSettings.voxel.occupancyResolution;
-    }
+    // Its resolution is voxel.occupancy_resolution, else the requested voxel.resolution: the
+    // one level the adaptive plan may give the cone trace (ResourcePlan.cpp) is the trace's,
+    // and the visibility marches keep the cost they had.
+    occupancySettings.voxel.resolution = mSettings.voxel.occupancyResolution > 0
+            ? mSettings.voxel.occupancyResolution
+            : mRequested.voxel.resolution;
+    occupancySettings.voxel.multiplier = mRequested.voxel.multiplier;
     // The scene is all in the finest level, and the voxelization raster spans the coarsest, so
     // each level more halves the raster samples per finest voxel and leaves holes in thin
     // walls that the visibility marches pass through. The marches of the atlas and the VPLs
