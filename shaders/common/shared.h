@@ -412,8 +412,8 @@ struct VoxelUniforms {                  // std140
                                         // y = 1 to jitter the cone ring per pixel, z = log2
                                         // of the texel width of the light pyramid mip a cone
                                         // reads, in cone diameters (voxel.footprint),
-                                        // w = voxels between a surface and its cones'
-                                        // origin (voxel.cone_offset)
+                                        // w = finest voxels between a surface and its
+                                        // cones' origin (voxel.cone_offset)
     vec4 raster;                        // voxelization: x = 1 to rasterize each level over
                                         // its own extent, 0 for one raster over the
                                         // coarsest; y = 1 / voxel.multiplier^2, a raster

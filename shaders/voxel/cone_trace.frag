@@ -39,8 +39,10 @@ void main() {
     // path tracer and the forward pass (the winding picks the wrong side where normals point
     // against it).
     if (dot(n, frame.cameraPosition.xyz - vin.position) < 0.0) n = -n;
-    // Leave the surface's own voxel before the first sample: voxel.cone_offset voxels out.
-    vec3 origin = vin.position + n * (voxel.smoothing.w * levelVoxelSize(level));
+    // Leave the surface's own voxel before the first sample, and stand at least
+    // voxel.cone_offset finest voxels out (a length, whatever level holds the surface).
+    vec3 origin = vin.position +
+            n * max(levelVoxelSize(level), voxel.smoothing.w * levelVoxelSize(0));
     // With voxel.jitter the ring turns by a 4x4 ordered-dither fraction of its 45-degree
     // spacing, so neighbouring pixels sample 16 different ring directions; the filter pass
     // averages them back into a smooth result.

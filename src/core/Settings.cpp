@@ -259,8 +259,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "(thesis: 1)",
                 0.25f, 2.0f, [](Settings& s) -> float& { return s.voxel.footprint; }),
         floatSetting("voxel.cone_offset",
-                "voxels between a surface and the origin of its cones (the thesis' minimum "
-                "distance; the walk starts one voxel further out)",
+                "finest voxels between a surface and the origin of its cones, at least one voxel "
+                "of the level holding it (the thesis' minimum distance; the walk starts one "
+                "voxel further out)",
                 0.5f, 4.0f, [](Settings& s) -> float& { return s.voxel.coneOffset; }),
         boolSetting("voxel.falloff", "apply the thesis' 1/(1+d^2) attenuation to cone samples",
                 [](Settings& s) -> bool& { return s.voxel.falloff; }),

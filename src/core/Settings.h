@@ -75,9 +75,10 @@ struct VoxelSettings {
                                   // cone reads, in cone diameters (thesis: 1; a trilinear
                                   // read of texels one diameter wide averages over about
                                   // twice the cone's footprint, cone_tracing.glsl)
-    float coneOffset = 1.0f;      // voxel.cone_offset: voxels (of the level holding the surface)
-                                  // between a surface and its cones' origin, the thesis'
-                                  // minimum distance; the walk starts one voxel further out
+    float coneOffset = 1.0f;      // voxel.cone_offset: finest voxels between a surface and its
+                                  // cones' origin (at least one voxel of the level holding
+                                  // it), the thesis' minimum distance; the walk starts one
+                                  // voxel further out
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
     bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (4x4 dither)
