@@ -38,7 +38,7 @@ CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
 RING_LOOP = "for (int i = 0; i < 8; ++i) {"
 LIGHT_CALL = "reflected = coarsestLight("
 
-COUNTER_DECL_TEXT = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
+TRACE_CONE_DECL = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
 # The trace of Friduric's demo (the peer of results-performance.md) over the coarsest level:
 # steps of one cone diameter from two voxels out, each one trilinear read of the radiance
 # pyramid at the mip as wide as the cone, composited front to back.
@@ -77,17 +77,16 @@ PROFILE = {
     # with VOXATLAS_SHADER_DIR=DIR).
     "peer's trace": ("the walk: a cone samples the radiance pyramid at its own width, one "
                      "trilinear read per step, each step as long as the cone is wide", [
-        (COUNTER_DECL_TEXT, COUNTER_DECL_TEXT + PEER_TRACE)]),
+        (TRACE_CONE_DECL, TRACE_CONE_DECL + PEER_TRACE)]),
 }
 
-COUNTER_DECL = COUNTER_DECL_TEXT
 # What each iteration of a cone's walk did, counted per pixel over its 9 cones.
 COUNTER_NAMES = ["empty blocks crossed", "empty voxels stepped through",
                  "occupied voxels facing away", "planes the axis missed", "surfaces met",
                  "finer-level samples", "final opacity"]
 COUNTS = [
-    (COUNTER_DECL, "float gCount[7] = float[7](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);\n"
-     + COUNTER_DECL),
+    (TRACE_CONE_DECL, "float gCount[7] = float[7](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);\n"
+     + TRACE_CONE_DECL),
     ("diameter = max(2.0 * tanHalf * dist, finest);\n                    continue;",
      "diameter = max(2.0 * tanHalf * dist, finest);\n                    gCount[0] += 1.0; "
      "continue;"),
