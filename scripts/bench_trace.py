@@ -90,8 +90,8 @@ COUNTS = [
     ("diameter = max(2.0 * tanHalf * dist, finest);\n                    continue;",
      "diameter = max(2.0 * tanHalf * dist, finest);\n                    gCount[0] += 1.0; "
      "continue;"),
-    ("if (coverage <= 0.0) continue;\n                vec4 plane",
-     "if (coverage <= 0.0) { gCount[1] += 1.0; continue; }\n                vec4 plane"),
+    ("if (!voxelOccupied(plane)) continue;",
+     "if (!voxelOccupied(plane)) { gCount[1] += 1.0; continue; }"),
     (": cosine > 0.0) {\n                    continue;",
      ": cosine > 0.0) {\n                    gCount[2] += 1.0; continue;"),
     ("slack)) {\n                        continue;",

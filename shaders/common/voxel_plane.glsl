@@ -29,6 +29,20 @@ const float kPlaneTolerance = 0.1;
 // facing apart, such as both faces of a slab thinner than a voxel.
 const float kMeanPlaneNormal = 0.5;
 
+// Whether a voxel is occupied, from its normal texel alone: voxelization and propagation
+// never leave an occupied voxel's texel all zero (voxelNormalTexel), and cleared voxels are.
+// Cone tracing's walk thus fetches one texel a step, not the coverage and then the normal.
+bool voxelOccupied(vec4 plane) {
+    return plane != vec4(0.0);
+}
+
+// The normal texel an occupied voxel stores: surfaces facing opposite ways can cancel its
+// normal, and their offsets too, to nothing; the smallest 8-bit offset then marks it occupied
+// (no reader uses the offset of a normal that short).
+vec4 voxelNormalTexel(vec4 plane) {
+    return plane == vec4(0.0) ? vec4(0.0, 0.0, 0.0, 1.0 / 127.0) : plane;
+}
+
 // Whether the voxel's normal texel on `level` says it holds one plane. `coarserLevels` takes
 // a coarser level's unit-length normal for one plane as well, which it is not where surfaces
 // meet (above); only cone tracing's coarsest-level walk asks for that, under

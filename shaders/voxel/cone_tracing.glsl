@@ -233,9 +233,11 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
         vec3 reflected;
         if (coarsest == 0 || level == coarsest) {   // a compile-time 0 drops the branch below
             // Walk the axis voxel by voxel through the coarsest level (a 3D DDA) to the
-            // first voxel it meets a surface in; the loop only fetches coverage, so the
-            // costly reads below run once per surface met.
+            // first voxel it meets a surface in; the loop fetches one normal texel a step
+            // (an occupied voxel's is never all zero: voxel_plane.glsl), so the coverage and
+            // the costly reads below run once per surface met.
             bool found = false, crossed = false;
+            ivec3 metTexel = ivec3(0);
             vec3 front = -dir;   // where no plane is met: back along the cone
             float hit = 0.0, coverage = 0.0, path = 0.0, entry = dist;
             while (steps < kMaxSteps && dist < maxDistance) {
@@ -264,9 +266,8 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                 dist += path + 1e-3 * coarsestSize;
                 diameter = max(2.0 * tanHalf * dist, finest);
                 ivec3 texel = ivec3(cell) + coarsestSlab;
-                coverage = clamp(texelFetch(voxelAlbedoTexture, texel, 0).a, 0.0, 1.0);
-                if (coverage <= 0.0) continue;
                 vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
+                if (!voxelOccupied(plane)) continue;
                 float cosine = dot(dir, plane.xyz);
                 // A voxel facing away from the cone is skipped, as in the thesis: its surface
                 // sends no light this way, and its occlusion would mostly be the cone's own
@@ -296,10 +297,12 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                     // Several surfaces: occluding along the whole path, light read halfway.
                     hit = 0.5 * path;
                 }
+                metTexel = texel;
                 found = true;
                 break;
             }
             if (!found) continue;
+            coverage = clamp(texelFetch(voxelAlbedoTexture, metTexel, 0).a, 0.0, 1.0);
             corrected = crossed ? coverage
                     : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
             hit = clamp(hit, 0.0, path);

@@ -13,6 +13,7 @@
 // level (which lets cones see through walls and dims what they do see); albedo and
 // irradiance are rescaled by the same factor so both stay per covered area unchanged.
 #include "../common/voxel_cascade.glsl"
+#include "../common/voxel_plane.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
 
@@ -74,5 +75,6 @@ void main() {
     ivec3 target = coarse + ivec3(v / 4, v / 4, v / 4 + level * v);
     imageStore(voxelAlbedo, target, albedo);
     imageStore(voxelIrradiance, target, irradiance);
-    imageStore(voxelNormal, target, vec4(normal, offset));
+    imageStore(voxelNormal, target,
+            albedo.a > 0.0 ? voxelNormalTexel(vec4(normal, offset)) : vec4(0.0));
 }

@@ -9,6 +9,7 @@
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "../common/voxel_cascade.glsl"
+#include "../common/voxel_plane.glsl"
 #define VOXEL_DIRECTIONAL_SUMS
 #include "voxel_directional.glsl"
 #include "voxel_lock.glsl"
@@ -47,7 +48,8 @@ void main() {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);
         imageStore(voxelAlbedo, texel, roundToHalf(keep * albedo + add * vec4(reflectance, 1.0), dither));
-        imageStore(voxelNormal, texel, roundToSnorm8(keep * normal + add * vec4(n, planeOffset), dither));
+        imageStore(voxelNormal, texel,
+                voxelNormalTexel(roundToSnorm8(keep * normal + add * vec4(n, planeOffset), dither)));
         vec4 irradiance = imageLoad(voxelIrradiance, texel);
         vec3 projected = voxel.raster.z != 0.0 ? area * abs(n) : vec3(0.0);
         imageStore(voxelIrradiance, texel,

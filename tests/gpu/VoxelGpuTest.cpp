@@ -374,6 +374,53 @@ TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
     EXPECT_GT(propagated, 20);
 }
 
+// Cone tracing's walk tells occupied voxels from empty ones by the normal texel alone
+// (voxel_plane.glsl), so no occupied voxel may store an all-zero one. Two coincident squares
+// facing opposite ways cancel both the normal and the offset of the voxels holding them; the
+// surface lies on level 0's voxel centres so their offsets average to zero as well.
+TEST_F(VoxelGpuTest, OccupiedVoxelsNeverStoreAnAllZeroNormal) {
+    scene::Scene scene;
+    scene.materials.push_back(scene::Material{});
+    scene.cameras.push_back(lookAtCamera({0.0f, 0.2f, 0.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
+    // One scene-centred level of 32^3 voxels 1/16 m wide.
+    Settings settings = thesisAllocation();
+    settings.voxel.levels = 1;
+    settings.voxel.sceneCentred = true;
+    settings.voxel.extent = 2.0f;
+    constexpr float kCentreY = 1.0f / 32.0f;
+    scene::Primitive up = horizontalSquare(0.9f, kCentreY);
+    scene::Primitive down = up;
+    down.normals.assign(down.normals.size(), glm::vec3(0.0f, -1.0f, 0.0f));
+    down.indices = {0, 1, 2, 0, 2, 3};
+    addPrimitive(scene, up);
+    addPrimitive(scene, down);
+    // A small square a voxel higher centres the scene's bounds, and so the level, a voxel
+    // edge above the pair: the pair lies on a row of voxel centres.
+    addPrimitive(scene, horizontalSquare(0.05f, 3.0f * kCentreY));
+    addDefaults(scene);
+    VoxelFrame frame(scene, settings, {32, 32});
+    const voxel::CascadeVolume& volume = frame.manager().volume();
+    ASSERT_EQ(volume.levels(), 1);
+    const auto albedo = readVolume(frame.manager().textures().albedo, volume);
+    const auto normal = readVolume(frame.manager().textures().normal, volume);
+    int occupied = 0, cancelled = 0, zeroTexels = 0, strayTexels = 0;
+    for (std::size_t i = 0; i < albedo.size(); ++i) {
+        const bool zero = normal[i] == glm::vec4(0.0f);
+        if (albedo[i].a > 0.0f) {
+            ++occupied;
+            if (glm::length(glm::vec3(normal[i])) < 0.1f) ++cancelled;
+            if (zero) ++zeroTexels;
+        } else if (!zero) {
+            ++strayTexels;
+        }
+    }
+    std::printf("%d occupied voxels, %d with cancelled normals\n", occupied, cancelled);
+    EXPECT_GT(occupied, 500);
+    EXPECT_GT(cancelled, occupied / 2) << "the two faces should cancel in most voxels";
+    EXPECT_EQ(zeroTexels, 0) << "occupied voxels the walk would take for empty";
+    EXPECT_EQ(strayTexels, 0) << "empty voxels the walk would take for occupied";
+}
+
 // The pyramid above the coarsest level averages its reflected light: mip m summed over its
 // texels holds 1/8^(m+1) of the coarsest level's rho E x coverage summed over its voxels, and
 // of its coverage (1%, half-float sums).
