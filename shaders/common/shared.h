@@ -164,6 +164,8 @@
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
+#define VOXEL_BLOCK                 4   // edge, in coarsest voxels, of the blocks cone tracing's
+                                        // walk crosses in one step where they are empty
 #define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
 #define TEMPORAL_LOCAL_SIZE         8   // the temporal filter runs 8x8 texel groups
 #define TRACE_REUSE_LOCAL_SIZE      8   // trace reuse runs 8x8 texel groups

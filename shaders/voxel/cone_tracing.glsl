@@ -79,10 +79,9 @@ const int kMaxSteps = 1024;
 // The axis meets a flat voxel's plane up to this many voxel sizes, measured along the axis,
 // before or after its path through the voxel.
 const float kAxisCrossingSlack = 0.01;
-// The coarsest-level walk crosses empty space a block of kEmptyBlock^3 voxels at a time: a
-// texel of the radiance pyramid's mip kEmptyBlockMip (isotropic voxels only).
-const int kEmptyBlockMip = 1;
-const int kEmptyBlock = 2 << kEmptyBlockMip;
+// The coarsest-level walk crosses empty space a block of kEmptyBlock^3 voxels at a time, where
+// the voxel it stands in says its block is empty (EmptyBlocksPass.h; isotropic voxels only).
+const int kEmptyBlock = VOXEL_BLOCK;
 // Anisotropic voxels whose faces towards a cone are covered less than this hold nothing that
 // faces it.
 const float kNothingFaces = 1e-3;
@@ -203,12 +202,6 @@ float cellExit(vec3 local, vec3 dir, float cellSize) {
     return max(min(exitAt.x, min(exitAt.y, exitAt.z)), 1e-3);
 }
 
-// Whether the kEmptyBlock^3 coarsest voxels around `local` are all empty: the pyramid texel
-// over them averages their coverage, so it is zero only when every one is.
-bool emptyBlock(vec3 local) {
-    return texelFetch(voxelPyramidTexture, ivec3(local) / kEmptyBlock, kEmptyBlockMip).a <= 0.0;
-}
-
 // Radiance seen along a cone from origin along dir whose half-angle has tangent tanHalf.
 vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
     float finest = levelVoxelSize(0);
@@ -234,8 +227,9 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
         if (coarsest == 0 || level == coarsest) {   // a compile-time 0 drops the branch below
             // Walk the axis voxel by voxel through the coarsest level (a 3D DDA) to the
             // first voxel it meets a surface in; the loop fetches one normal texel a step
-            // (an occupied voxel's is never all zero: voxel_plane.glsl), so the coverage and
-            // the costly reads below run once per surface met.
+            // (which tells an empty voxel, one of an empty block and an occupied one apart:
+            // voxel_plane.glsl), so the coverage and the costly reads below run once per
+            // surface met.
             bool found = false, crossed = false;
             ivec3 metTexel = ivec3(0);
             vec3 front = -dir;   // where no plane is met: back along the cone
@@ -255,18 +249,18 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                 bool narrow = coarsest > 0 && log2(diameter / finest) < float(coarsest);
                 if (narrow && insideLevel(p, coarsest - 1)) break;
                 bool skipEmpty = !narrow && !anisotropicVoxels();
-                if (skipEmpty && emptyBlock(local)) {
+                vec3 cell = floor(local);
+                ivec3 texel = ivec3(cell) + coarsestSlab;
+                vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
+                if (skipEmpty && plane == kEmptyBlockTexel) {
                     dist += (cellExit(local, dir, float(kEmptyBlock)) + 1e-3) * coarsestSize;
                     diameter = max(2.0 * tanHalf * dist, finest);
                     continue;
                 }
-                vec3 cell = floor(local);
                 path = cellExit(local, dir, 1.0) * coarsestSize;
                 entry = dist;
                 dist += path + 1e-3 * coarsestSize;
                 diameter = max(2.0 * tanHalf * dist, finest);
-                ivec3 texel = ivec3(cell) + coarsestSlab;
-                vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
                 if (!voxelOccupied(plane)) continue;
                 float cosine = dot(dir, plane.xyz);
                 // A voxel facing away from the cone is skipped, as in the thesis: its surface
