@@ -81,7 +81,7 @@ PROFILE = {
 }
 
 # What each iteration of a cone's walk did, counted per pixel over its 9 cones.
-COUNTER_NAMES = ["empty blocks crossed", "empty voxels stepped through",
+COUNTER_NAMES = ["leaps through empty space", "empty voxels stepped through",
                  "occupied voxels facing away", "planes the axis missed", "surfaces met",
                  "finer-level samples", "final opacity"]
 COUNTS = [

@@ -42,7 +42,7 @@ def frame_costs(scene, settings, frames, warmup, size, extra=()):
 
 
 SKIPPABLE = ("voxel/clear", "voxel/voxelize", "voxel/inject", "voxel/finalize", "voxel/propagate",
-             "voxel/empty_blocks", "voxel/pyramid")
+             "voxel/empty_distance", "voxel/pyramid")
 
 
 def voxel_bytes(memory):

@@ -133,6 +133,9 @@
                                         // voxel's own cones gathered (the pyramid source's
                                         // unit: no pass binds both)
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
+#define BIND_IMG_VOXEL_DISTANCE_X   6   // r8ui (v^3), the empty-distance pass' distances along x
+#define BIND_IMG_VOXEL_DISTANCE_XY  7   // r8ui (v^3), ... over x and y (the pyramid's units: no
+                                        // pass binds both)
 #define BIND_IMG_VPL_TARGET         5   // the VPL gather's (rgba32f) or filter's (rgba16f) output
 #define BIND_IMG_VPL_DEBUG_IDS      6   // r32ui, the VPL debug views: the key of the VPL drawn
                                         // over each pixel (VplDebugPass), 0 = none
@@ -164,8 +167,6 @@
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
-#define VOXEL_BLOCK                 4   // edge, in coarsest voxels, of the blocks cone tracing's
-                                        // walk crosses in one step where they are empty
 #define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
 #define TEMPORAL_LOCAL_SIZE         8   // the temporal filter runs 8x8 texel groups
 #define TRACE_REUSE_LOCAL_SIZE      8   // trace reuse runs 8x8 texel groups
@@ -230,8 +231,9 @@
 #define LOC_PRESENT_SCALE           3   // float, radiance multiplier undoing the pre-exposure
 #define LOC_FORWARD_INDIRECT_SIZE   4   // vec2, texels of the indirect texture at
                                         // BIND_TEX_INDIRECT; (0, 0) = no indirect light
-#define LOC_VOXEL_LEVEL             5   // int, cascade level (propagation, debug view) or
-                                        // pyramid mip being written by this dispatch
+#define LOC_VOXEL_LEVEL             5   // int, cascade level (propagation, debug view),
+                                        // pyramid mip being written by this dispatch, or the
+                                        // axis the empty-distance pass runs along
 #define LOC_VOXEL_DEBUG_VIEW        6   // int, 0 albedo, 1 irradiance, 2 normal
 #define LOC_INJECT_VIEW_PROJECTION  7   // mat4, world -> clip of the light view being injected
 #define LOC_INJECT_AXIS             8   // vec4, xyz = unit forward axis of the light view,

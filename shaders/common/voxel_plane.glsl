@@ -29,23 +29,32 @@ const float kPlaneTolerance = 0.1;
 // facing apart, such as both faces of a slab thinner than a voxel.
 const float kMeanPlaneNormal = 0.5;
 
-// The normal texel of every empty voxel of the coarsest level in a block of VOXEL_BLOCK^3
-// empty voxels (EmptyBlocksPass.h); other empty voxels' texels are all zero, as cleared.
-const vec4 kEmptyBlockTexel = vec4(0.0, 0.0, 0.0, -1.0);
+// Empty voxels' normal texels: all zero as cleared, and on the coarsest level of isotropic
+// voxels a zero normal over minus the voxel's Chebyshev distance to the nearest occupied voxel
+// in 127ths (EmptyDistancePass.h), at most kEmptyDistanceCap + 1.
+const int kEmptyDistanceCap = 8;
+
+vec4 voxelEmptyTexel(int distance) {
+    return vec4(0.0, 0.0, 0.0, -float(distance) / 127.0);
+}
 
 // Whether a voxel is occupied, from its normal texel alone: voxelization and propagation
-// never give an occupied voxel one of the two empty texels (voxelNormalTexel). Cone tracing's
-// walk thus fetches one texel a step, not the coverage and then the normal.
+// never give an occupied voxel an empty texel (voxelNormalTexel). Cone tracing's walk thus
+// fetches one texel a step, not the coverage and then the normal.
 bool voxelOccupied(vec4 plane) {
-    return plane != vec4(0.0) && plane != kEmptyBlockTexel;
+    return plane.xyz != vec3(0.0) || plane.w > 0.0;
+}
+
+// An empty voxel's distance to the nearest occupied one, 0 where none was written.
+int voxelEmptyDistance(vec4 plane) {
+    return int(round(-plane.w * 127.0));
 }
 
 // The normal texel an occupied voxel stores: surfaces facing opposite ways can cancel its
-// normal, and their offsets too, to nothing (or to an offset of -1); the smallest 8-bit
-// offset then marks it occupied (no reader uses the offset of a normal that short).
+// normal to nothing (their offsets to zero or less); the smallest positive 8-bit offset then
+// marks it occupied (no reader uses the offset of a normal that short).
 vec4 voxelNormalTexel(vec4 plane) {
-    return plane == vec4(0.0) || plane == kEmptyBlockTexel ? vec4(0.0, 0.0, 0.0, 1.0 / 127.0)
-                                                           : plane;
+    return voxelOccupied(plane) ? plane : vec4(0.0, 0.0, 0.0, 1.0 / 127.0);
 }
 
 // Whether the voxel's normal texel on `level` says it holds one plane. `coarserLevels` takes

@@ -79,9 +79,6 @@ const int kMaxSteps = 1024;
 // The axis meets a flat voxel's plane up to this many voxel sizes, measured along the axis,
 // before or after its path through the voxel.
 const float kAxisCrossingSlack = 0.01;
-// The coarsest-level walk crosses empty space a block of kEmptyBlock^3 voxels at a time, where
-// the voxel it stands in says its block is empty (EmptyBlocksPass.h; isotropic voxels only).
-const int kEmptyBlock = VOXEL_BLOCK;
 // Anisotropic voxels whose faces towards a cone are covered less than this hold nothing that
 // faces it.
 const float kNothingFaces = 1e-3;
@@ -193,11 +190,10 @@ vec3 coarsestLight(vec3 p, float diameter, vec3 dir, vec3 front) {
     return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
 }
 
-// Distance along dir, in voxels, from `local` (coarsest-level voxel units) out of its cell of
-// a grid of `cellSize` voxels; at least a thousandth of a voxel, so the walk always moves.
-float cellExit(vec3 local, vec3 dir, float cellSize) {
-    vec3 cell = floor(local / cellSize) * cellSize;
-    vec3 toExit = mix(local - cell, cell + cellSize - local, greaterThan(dir, vec3(0.0)));
+// Distance along dir, in voxels, from `local` (coarsest-level voxel units, inside the box from
+// lo to hi) out of that box; at least a thousandth of a voxel, so the walk always moves.
+float boxExit(vec3 local, vec3 dir, vec3 lo, vec3 hi) {
+    vec3 toExit = mix(local - lo, hi - local, greaterThan(dir, vec3(0.0)));
     vec3 exitAt = toExit / max(abs(dir), vec3(1e-6));
     return max(min(exitAt.x, min(exitAt.y, exitAt.z)), 1e-3);
 }
@@ -227,9 +223,9 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
         if (coarsest == 0 || level == coarsest) {   // a compile-time 0 drops the branch below
             // Walk the axis voxel by voxel through the coarsest level (a 3D DDA) to the
             // first voxel it meets a surface in; the loop fetches one normal texel a step
-            // (which tells an empty voxel, one of an empty block and an occupied one apart:
-            // voxel_plane.glsl), so the coverage and the costly reads below run once per
-            // surface met.
+            // (which tells an occupied voxel from an empty one, and how far the nearest
+            // occupied one is: voxel_plane.glsl), so the coverage and the costly reads below
+            // run once per surface met.
             bool found = false, crossed = false;
             ivec3 metTexel = ivec3(0);
             vec3 front = -dir;   // where no plane is met: back along the cone
@@ -252,12 +248,16 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                 vec3 cell = floor(local);
                 ivec3 texel = ivec3(cell) + coarsestSlab;
                 vec4 plane = texelFetch(voxelNormalTexture, texel, 0);
-                if (skipEmpty && plane == kEmptyBlockTexel) {
-                    dist += (cellExit(local, dir, float(kEmptyBlock)) + 1e-3) * coarsestSize;
+                int empty = voxelOccupied(plane) ? 0 : voxelEmptyDistance(plane);
+                if (skipEmpty && empty >= 2) {
+                    // Every voxel within empty - 1 of this one is empty: leave their cube.
+                    float reach = float(empty - 1);
+                    dist += (boxExit(local, dir, cell - reach, cell + 1.0 + reach) + 1e-3) *
+                            coarsestSize;
                     diameter = max(2.0 * tanHalf * dist, finest);
                     continue;
                 }
-                path = cellExit(local, dir, 1.0) * coarsestSize;
+                path = boxExit(local, dir, cell, cell + 1.0) * coarsestSize;
                 entry = dist;
                 dist += path + 1e-3 * coarsestSize;
                 diameter = max(2.0 * tanHalf * dist, finest);

@@ -374,12 +374,12 @@ TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
     EXPECT_GT(propagated, 20);
 }
 
-// Cone tracing's walk tells from the normal texel alone whether a voxel is occupied, empty, or
-// empty in an empty block it may cross in one step (voxel_plane.glsl, EmptyBlocksPass.h). Two
+// Cone tracing's walk learns from the normal texel alone whether a voxel is occupied and, if
+// not, how far the nearest occupied voxel is (voxel_plane.glsl, EmptyDistancePass.h). Two
 // coincident squares facing opposite ways cancel both the normal and the offset of the voxels
 // holding them (the surface lies on level 0's voxel centres, so their offsets average to zero
-// as well); without a marker those voxels would store the empty texel.
-TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedEmptyAndEmptyBlockVoxels) {
+// as well); without a marker those voxels would store an empty texel.
+TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem) {
     scene::Scene scene;
     scene.materials.push_back(scene::Material{});
     scene.cameras.push_back(lookAtCamera({0.0f, 0.2f, 0.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
@@ -404,38 +404,41 @@ TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedEmptyAndEmptyBlockVoxels) {
     ASSERT_EQ(volume.levels(), 1);
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
     const auto normal = readVolume(frame.manager().textures().normal, volume);
-    const glm::vec4 emptyBlockTexel(0.0f, 0.0f, 0.0f, -1.0f);
     const int v = volume.resolution();
-    int occupied = 0, cancelled = 0, emptyBlocks = 0, wrong = 0;
-    for (int bz = 0; bz < v; bz += VOXEL_BLOCK)
-        for (int by = 0; by < v; by += VOXEL_BLOCK)
-            for (int bx = 0; bx < v; bx += VOXEL_BLOCK) {
-                bool blockEmpty = true;
-                for (int i = 0; i < VOXEL_BLOCK * VOXEL_BLOCK * VOXEL_BLOCK; ++i) {
-                    const glm::ivec3 voxel(bx + i % VOXEL_BLOCK, by + i / VOXEL_BLOCK % VOXEL_BLOCK,
-                            bz + i / (VOXEL_BLOCK * VOXEL_BLOCK));
-                    blockEmpty = blockEmpty && albedo[texelIndex(volume, voxel, 0)].a <= 0.0f;
-                }
-                emptyBlocks += blockEmpty ? 1 : 0;
-                for (int i = 0; i < VOXEL_BLOCK * VOXEL_BLOCK * VOXEL_BLOCK; ++i) {
-                    const glm::ivec3 voxel(bx + i % VOXEL_BLOCK, by + i / VOXEL_BLOCK % VOXEL_BLOCK,
-                            bz + i / (VOXEL_BLOCK * VOXEL_BLOCK));
-                    const std::size_t t = texelIndex(volume, voxel, 0);
-                    if (albedo[t].a > 0.0f) {
-                        ++occupied;
-                        if (glm::length(glm::vec3(normal[t])) < 0.1f) ++cancelled;
-                        if (normal[t] == glm::vec4(0.0f) || normal[t] == emptyBlockTexel) ++wrong;
-                    } else if (normal[t] != (blockEmpty ? emptyBlockTexel : glm::vec4(0.0f))) {
-                        ++wrong;
-                    }
-                }
+    std::vector<glm::ivec3> occupiedVoxels;
+    for (int z = 0; z < v; ++z)
+        for (int y = 0; y < v; ++y)
+            for (int x = 0; x < v; ++x) {
+                if (albedo[texelIndex(volume, {x, y, z}, 0)].a > 0.0f) occupiedVoxels.push_back({x, y, z});
             }
-    std::printf("%d occupied voxels, %d with cancelled normals; %d empty blocks\n", occupied,
-            cancelled, emptyBlocks);
-    EXPECT_GT(occupied, 500);
-    EXPECT_GT(cancelled, occupied / 2) << "the two faces should cancel in most voxels";
-    EXPECT_GT(emptyBlocks, 100);
-    EXPECT_EQ(wrong, 0) << "voxels whose normal texel says what they are not";
+    constexpr int kCap = 8;   // kEmptyDistanceCap
+    int cancelled = 0, wrongOccupied = 0, wrongEmpty = 0, far = 0;
+    for (int z = 0; z < v; ++z)
+        for (int y = 0; y < v; ++y)
+            for (int x = 0; x < v; ++x) {
+                const std::size_t t = texelIndex(volume, {x, y, z}, 0);
+                const glm::vec4 texel = normal[t];
+                const bool markedOccupied = glm::vec3(texel) != glm::vec3(0.0f) || texel.w > 0.0f;
+                if (albedo[t].a > 0.0f) {
+                    if (glm::length(glm::vec3(texel)) < 0.1f) ++cancelled;
+                    if (!markedOccupied) ++wrongOccupied;
+                    continue;
+                }
+                int distance = kCap + 1;
+                for (const glm::ivec3& o : occupiedVoxels) {
+                    const glm::ivec3 d = glm::abs(o - glm::ivec3(x, y, z));
+                    distance = std::min(distance, std::max(d.x, std::max(d.y, d.z)));
+                }
+                far += distance > kCap ? 1 : 0;
+                if (markedOccupied || std::lround(-texel.w * 127.0f) != distance) ++wrongEmpty;
+            }
+    std::printf("%zu occupied voxels, %d with cancelled normals; %d empty voxels farther than %d\n",
+            occupiedVoxels.size(), cancelled, far, kCap);
+    EXPECT_GT(occupiedVoxels.size(), 500u);
+    EXPECT_GT(cancelled, int(occupiedVoxels.size()) / 2) << "the two faces should cancel in most voxels";
+    EXPECT_GT(far, 1000);
+    EXPECT_EQ(wrongOccupied, 0) << "occupied voxels the walk would take for empty";
+    EXPECT_EQ(wrongEmpty, 0) << "empty voxels whose texel gives the wrong distance";
 }
 
 // The pyramid above the coarsest level averages its reflected light: mip m summed over its

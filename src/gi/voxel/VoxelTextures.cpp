@@ -9,7 +9,7 @@ int facesOf(bool anisotropic) { return anisotropic ? VOXEL_FACES : 1; }
 
 gl::Texture createVolume(GLenum format, glm::ivec3 size, const char* label) {
     gl::Texture texture = gl::createTexture3D(format, size, 1, label);
-    const GLint filter = format == GL_R32UI ? GL_NEAREST : GL_LINEAR;
+    const GLint filter = format == GL_R32UI || format == GL_R8UI ? GL_NEAREST : GL_LINEAR;
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, filter);
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, filter);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
@@ -31,6 +31,10 @@ void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces)
     helper = createVolume(GL_RGBA16F, size, "voxel/helper");
     lock = createVolume(GL_R32UI, size, "voxel/lock");
     gathered = bounces ? createVolume(GL_RGBA16F, size, "voxel/gathered") : gl::Texture();
+    for (gl::Texture& scratch : distanceScratch) {
+        scratch = anisotropic ? gl::Texture()
+                              : createVolume(GL_R8UI, glm::ivec3(v), "voxel/distance_scratch");
+    }
     const int faces = facesOf(anisotropic);
     directional = anisotropic
             ? createVolume(GL_RGBA16F, {v * faces, v, v * l}, "voxel/directional")
@@ -68,6 +72,10 @@ std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotro
             {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2},
                     gl::fullMipCount(v / 2))}};
     if (bounces) items.push_back({"voxel/gathered", gl::textureBytes(GL_RGBA16F, size, 1)});
+    if (!anisotropicVoxels) {
+        items.push_back({"voxel/distance_scratch",
+                2 * gl::textureBytes(GL_R8UI, glm::ivec3(v), 1)});
+    }
     if (anisotropicVoxels) {
         items.push_back({"voxel/directional",
                 gl::textureBytes(GL_RGBA16F, {v * faces, v, v * l}, 1)});

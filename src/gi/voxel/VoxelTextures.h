@@ -27,6 +27,8 @@ struct VoxelTextures {
     gl::Texture pyramid;      // mip m: coarsest level averaged over 2^(m+1) voxels per axis,
                               // rgb = rho E x coverage (W/m^2), a = coverage; anisotropic:
                               // 6 x-slabs, one per face, as `directional`
+    gl::Texture distanceScratch[2];   // isotropic only, R8UI (v^3): the empty-distance pass'
+                                      // distances along x, then over x and y
     gl::Texture directional;  // anisotropic only, (6v, v, v*l): x-slab f = the voxel seen from
                               // face f (VOXEL_FACE_*), rgb = rho E x a, a = facing coverage
     gl::Texture gathered;     // gi.bounces > 1 only: rgb = the indirect E x coverage the voxel

@@ -23,7 +23,7 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
            mPropagate.init(shaders, error) && mBounce.init(shaders, error) &&
            mDirectional.init(shaders, error) &&
-           mEmptyBlocks.init(shaders, error) && mPyramid.init(shaders, error) &&
+           mEmptyDistance.init(shaders, error) && mPyramid.init(shaders, error) &&
            mTrace.init(shaders, error) &&
            mReuse.init(shaders, error) && mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
@@ -240,13 +240,13 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
             {mTextures}, profiler);
     mPropagate.execute({mUniforms}, {mTextures}, profiler);
     if (mTextures.anisotropic) mDirectional.execute({mUniforms, mTextures}, {mTextures}, profiler);
-    mEmptyBlocks.execute({mUniforms}, {mTextures}, profiler);
+    mEmptyDistance.execute({mUniforms}, {mTextures}, profiler);
     mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
     for (int bounce = 2; bounce <= mBounces; ++bounce) {
         mBounce.execute({mUniforms, in.frameUniforms, bounce == 2}, {mTextures}, profiler);
         // Propagation rewrites the coarsest level's centre, marks included.
         mPropagate.execute({mUniforms}, {mTextures}, profiler);
-        mEmptyBlocks.execute({mUniforms}, {mTextures}, profiler);
+        mEmptyDistance.execute({mUniforms}, {mTextures}, profiler);
         mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
     }
 }

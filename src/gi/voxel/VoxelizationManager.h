@@ -18,7 +18,7 @@
 #include "gi/voxel/ConeTracePass.h"
 #include "gi/voxel/TraceReusePass.h"
 #include "gi/voxel/DirectionalVoxelsPass.h"
-#include "gi/voxel/EmptyBlocksPass.h"
+#include "gi/voxel/EmptyDistancePass.h"
 #include "gi/voxel/IndirectFilterPass.h"
 #include "gi/voxel/InjectPass.h"
 #include "gi/voxel/PropagatePass.h"
@@ -104,7 +104,7 @@ private:
     PropagatePass mPropagate;
     BouncePass mBounce;
     DirectionalVoxelsPass mDirectional;
-    EmptyBlocksPass mEmptyBlocks;
+    EmptyDistancePass mEmptyDistance;
     RadiancePyramidPass mPyramid;
     ConeTracePass mTrace;
     TraceReusePass mReuse;
