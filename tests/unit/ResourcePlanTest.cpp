@@ -39,8 +39,10 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
     EXPECT_GE(plan.voxel.finestExtent, 0.5592f);
     EXPECT_LT(plan.voxel.voxelSize(0), 0.02f);
     const std::size_t pyramid = 8u * (16u * 16u * 16u + 8u * 8u * 8u + 4u * 4u * 4u + 2u * 2u * 2u + 1u);
-    EXPECT_EQ(plan.voxelBytes(), 32u * 32u * 32u * 32u + pyramid)
-            << "32 bytes per voxel plus the radiance pyramid of the coarsest level";
+    const std::size_t distanceScratch = 2u * 32u * 32u * 32u;
+    EXPECT_EQ(plan.voxelBytes(), 32u * 32u * 32u * 32u + pyramid + distanceScratch)
+            << "32 bytes per voxel plus the radiance pyramid of the coarsest level and the "
+               "empty-distance pass' two bytes per coarsest voxel";
     // The fixed thesis allocation: three camera-centred levels, the finest of which hold only
     // the air between the camera and the box.
     const Settings fixed = test::thesisAllocation();
@@ -49,7 +51,7 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
     EXPECT_FALSE(thesis.voxel.sceneCentred);
     EXPECT_GT(thesis.voxel.voxelSize(2), 4.0f * plan.voxel.voxelSize(0))
             << "the only level holding the box is much coarser than the adaptive one";
-    EXPECT_EQ(thesis.voxelBytes(), 3u * 32u * 32u * 32u * 32u + pyramid);
+    EXPECT_EQ(thesis.voxelBytes(), 3u * 32u * 32u * 32u * 32u + pyramid + distanceScratch);
     // The atlas: about 1.9 m^2 of surface at half a voxel per texel.
     EXPECT_NEAR(plan.surfaceArea, 1.9, 0.3);
     EXPECT_GE(plan.atlasResolution, 128);

@@ -3,7 +3,8 @@
 // decide whether a voxel faces a cone); the lock is R32UI (spinlock bit + fragment count).
 // 32 bytes per voxel: 3.15 MB at v=32, l=3, under the thesis' 3.46 MB for the same data.
 // Beyond the thesis, a mipmapped RGBA16F pyramid of the coarsest level, (v/2)^3 at mip 0,
-// holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB).
+// holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB);
+// isotropic voxels add two scratch bytes per coarsest voxel for EmptyDistancePass (64 KB).
 // With voxel.anisotropic a directional copy of the cascade holds each voxel as seen from each
 // of its 6 faces (RGBA16F, 48 more bytes per voxel: 4.72 MB at v=32, l=3) and the pyramid
 // holds 6 faces too (DirectionalVoxelsPass.h). With gi.bounces > 1 one more RGBA16F volume
