@@ -32,7 +32,7 @@ const float kMeanPlaneNormal = 0.5;
 // Empty voxels' normal texels: all zero as cleared, and on the coarsest level of isotropic
 // voxels a zero normal over minus the voxel's Chebyshev distance to the nearest occupied voxel
 // in 127ths (EmptyDistancePass.h), at most kEmptyDistanceCap + 1.
-const int kEmptyDistanceCap = 8;
+const int kEmptyDistanceCap = 4;
 
 vec4 voxelEmptyTexel(int distance) {
     return vec4(0.0, 0.0, 0.0, -float(distance) / 127.0);

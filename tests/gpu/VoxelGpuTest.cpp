@@ -411,7 +411,7 @@ TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem) {
             for (int x = 0; x < v; ++x) {
                 if (albedo[texelIndex(volume, {x, y, z}, 0)].a > 0.0f) occupiedVoxels.push_back({x, y, z});
             }
-    constexpr int kCap = 8;   // kEmptyDistanceCap
+    constexpr int kCap = 4;   // kEmptyDistanceCap
     int cancelled = 0, wrongOccupied = 0, wrongEmpty = 0, far = 0;
     for (int z = 0; z < v; ++z)
         for (int y = 0; y < v; ++y)
