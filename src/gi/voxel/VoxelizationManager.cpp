@@ -244,9 +244,10 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
     mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
     for (int bounce = 2; bounce <= mBounces; ++bounce) {
         mBounce.execute({mUniforms, in.frameUniforms, bounce == 2}, {mTextures}, profiler);
-        // Propagation rewrites the coarsest level's centre, marks included.
         mPropagate.execute({mUniforms}, {mTextures}, profiler);
-        mEmptyDistance.execute({mUniforms}, {mTextures}, profiler);
+        // Propagation rewrote the coarsest level's centre, distances included, where there
+        // is more than one level; the occupancy itself is unchanged.
+        if (mTextures.levels > 1) mEmptyDistance.execute({mUniforms}, {mTextures}, profiler);
         mPyramid.execute({mUniforms, mTextures}, {mTextures}, profiler);
     }
 }
