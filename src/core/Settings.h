@@ -11,7 +11,9 @@ namespace gi {
 
 struct ShadowSettings {
     bool enabled = true;          // shadow.enabled
-    int resolution = 1024;        // shadow.resolution: texels per side of every map and cube face
+    int resolution = 1024;        // shadow.resolution: texels per side of spot maps and cube faces
+    int sunResolution = 4096;     // shadow.sun_resolution: texels per side of a directional
+                                  // light's map, which spans the whole scene
     float normalOffset = 1.5f;    // shadow.normal_offset: texels of footprint along the normal
     float pcfRadius = 1.0f;       // shadow.pcf_radius: texels between PCF taps
     int method = 0;               // shadow.method: SHADOW_METHOD_* (0 shadowmap, 1 bvh,

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace gi::render {
 namespace {
@@ -35,6 +36,92 @@ float farthestFrom(const glm::vec3& p, const scene::Aabb& bounds) {
 
 glm::vec3 anyPerpendicularUp(const glm::vec3& direction) {
     return std::abs(direction.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+// A sun's map over the scene: an orthographic view along the light whose window is the
+// outline of the scene's box seen from the light, turned so that one of the box's axes runs
+// up the map (whichever gives the smallest window), not the square around its bounding
+// sphere. Sponza's box (22.9 x 15.6 x 37.2 m) under a sun along (0.2, -1, 0.3) casts a
+// window 40.1 x 27.3 m against the sphere's 46.4 m square; the window's longer side sets the
+// texel, and with it the normal offset.
+struct OrthoFit {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    float width = 1.0f;    // the larger side of the window, metres
+    float depth = 1.0f;    // near to far, metres
+};
+
+OrthoFit fitOrthoWithUp(const glm::vec3& direction, const scene::Aabb& bounds,
+        const BoundingSphere& sphere, const glm::vec3& up) {
+    OrthoFit fit;
+    const glm::vec3 eye = sphere.center - direction * (2.0f * sphere.radius);
+    fit.view = glm::lookAt(eye, sphere.center, up);
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x,
+                (i & 2) ? bounds.max.y : bounds.min.y, (i & 4) ? bounds.max.z : bounds.min.z);
+        const glm::vec3 v = glm::vec3(fit.view * glm::vec4(corner, 1.0f));
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    // A margin of a thousandth keeps surfaces on the box's faces inside the window; the view
+    // looks down -z, so near and far are the corners' negated depths.
+    const glm::vec3 margin = 1e-3f * glm::max(hi - lo, glm::vec3(1e-6f));
+    lo -= margin;
+    hi += margin;
+    fit.projection = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z);
+    fit.width = std::max(hi.x - lo.x, hi.y - lo.y);
+    fit.depth = hi.z - lo.z;
+    return fit;
+}
+
+OrthoFit fitOrtho(const glm::vec3& direction, const scene::Aabb& bounds, const BoundingSphere& sphere) {
+    if (bounds.empty()) {
+        OrthoFit fit;
+        const float r = sphere.radius;
+        fit.view = glm::lookAt(sphere.center - direction * (2.0f * r), sphere.center,
+                anyPerpendicularUp(direction));
+        fit.projection = glm::ortho(-r, r, -r, r, 0.0f, 4.0f * r);
+        fit.width = 2.0f * r;
+        fit.depth = 4.0f * r;
+        return fit;
+    }
+    OrthoFit best;
+    bool found = false;
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::vec3 up(0.0f);
+        up[axis] = 1.0f;
+        if (std::abs(glm::dot(up, direction)) > 0.99f) continue;   // looking along it
+        const OrthoFit fit = fitOrthoWithUp(direction, bounds, sphere, up);
+        if (!found || fit.width < best.width) best = fit;
+        found = true;
+    }
+    return best;
+}
+
+// Texels per side of the 2D maps (spot and directional lights share one array) and of the
+// cube faces. A directional light's map spans the whole scene, so it has
+// shadow.sun_resolution texels a side where the others have shadow.resolution; a spot light
+// in the same scene shares its array and its finer texels. Kinds no light uses get 1x1
+// maps: the shader's samplers must always be complete.
+struct MapResolutions {
+    int flat = 1, cube = 1;
+};
+
+MapResolutions mapResolutions(const std::vector<scene::Light>& lights, const ShadowSettings& settings) {
+    MapResolutions res;
+    for (const scene::Light& light : lights) {
+        if (!settings.enabled) break;
+        switch (light.type) {
+        case scene::LightType::Point:
+        case scene::LightType::Area: res.cube = settings.resolution; break;
+        case scene::LightType::Spot: res.flat = std::max(res.flat, settings.resolution); break;
+        case scene::LightType::Directional:
+            res.flat = std::max({res.flat, settings.resolution, settings.sunResolution});
+            break;
+        case scene::LightType::Sky: break;   // unshadowed: cones see it
+        }
+    }
+    return res;
 }
 
 gl::Texture createShadowArray(GLenum target, int resolution, int layers, const char* label) {
@@ -66,7 +153,7 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
     mViews.clear();
     std::vector<shader::GpuShadow> table(std::max<std::size_t>(lights.size(), 1));
     int layers2D = 0, layersCube = 0;
-    const float resolution = float(settings.resolution);
+    const MapResolutions res = mapResolutions(lights, settings);
     const BoundingSphere sphere = sphereOf(bounds);
     for (std::size_t i = 0; i < lights.size() && settings.enabled; ++i) {
         const scene::Light& light = lights[i];
@@ -87,7 +174,7 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
                 mViews.push_back({projection * view, glm::vec4(light.position, far),
                         layersCube * 6 + face, true, light.type == scene::LightType::Area});
             }
-            s.params = glm::vec4(SHADOW_CUBE, float(layersCube), far, 2.0f / resolution);
+            s.params = glm::vec4(SHADOW_CUBE, float(layersCube), far, 2.0f / float(res.cube));
             ++layersCube;
         } else if (light.type == scene::LightType::Spot) {
             const float far = farthestFrom(light.position, bounds);
@@ -97,30 +184,27 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
                     anyPerpendicularUp(light.direction));
             s.worldToShadow = projection * view;
             mViews.push_back({s.worldToShadow, glm::vec4(0.0f), layers2D, false});
-            s.params = glm::vec4(SHADOW_2D, float(layers2D), far, 2.0f * std::tan(0.5f * fov) / resolution);
+            s.params = glm::vec4(SHADOW_2D, float(layers2D), far,
+                    2.0f * std::tan(0.5f * fov) / float(res.flat));
             ++layers2D;
         } else {
-            const glm::vec3 eye = sphere.center - light.direction * (2.0f * sphere.radius);
-            const glm::mat4 view = glm::lookAt(eye, sphere.center, anyPerpendicularUp(light.direction));
-            const float r = sphere.radius;
-            const glm::mat4 projection = glm::ortho(-r, r, -r, r, 0.0f, 4.0f * r);
-            s.worldToShadow = projection * view;
+            const OrthoFit fit = fitOrtho(light.direction, bounds, sphere);
+            s.worldToShadow = fit.projection * fit.view;
             mViews.push_back({s.worldToShadow, glm::vec4(0.0f), layers2D, false});
-            s.params = glm::vec4(SHADOW_2D, float(layers2D), 4.0f * r, 2.0f * r / resolution);
+            s.params = glm::vec4(SHADOW_2D, float(layers2D), fit.depth, fit.width / float(res.flat));
             s.bias.z = 1.0f;
             ++layers2D;
         }
     }
-    // Unused kinds get a 1x1 map: the shader's samplers must always be complete.
-    const int res2D = layers2D > 0 ? settings.resolution : 1;
-    const int resCube = layersCube > 0 ? settings.resolution : 1;
-    if (!mMaps2D || layers2D != mLayers2D || res2D != mResolution || layersCube != mLayersCube) {
-        mMaps2D = createShadowArray(GL_TEXTURE_2D_ARRAY, res2D, layers2D, "render/shadow/maps_2d");
-        mMapsCube = createShadowArray(GL_TEXTURE_CUBE_MAP_ARRAY, resCube, layersCube, "render/shadow/maps_cube");
+    if (!mMaps2D || layers2D != mLayers2D || layersCube != mLayersCube || res.flat != mResolution2D ||
+            res.cube != mResolutionCube) {
+        mMaps2D = createShadowArray(GL_TEXTURE_2D_ARRAY, res.flat, layers2D, "render/shadow/maps_2d");
+        mMapsCube = createShadowArray(GL_TEXTURE_CUBE_MAP_ARRAY, res.cube, layersCube, "render/shadow/maps_cube");
     }
     mLayers2D = layers2D;
     mLayersCube = layersCube;
-    mResolution = settings.resolution;
+    mResolution2D = res.flat;
+    mResolutionCube = res.cube;
     mShadowTable = gl::createBuffer(table.size() * sizeof(shader::GpuShadow), table.data(), 0,
             "render/shadow/table");
     mDirty = true;
@@ -135,7 +219,6 @@ void ShadowPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
     glNamedFramebufferDrawBuffer(mFramebuffer.id(), GL_NONE);
     glNamedFramebufferReadBuffer(mFramebuffer.id(), GL_NONE);
-    glViewport(0, 0, mResolution, mResolution);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -145,6 +228,8 @@ void ShadowPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     for (const View& view : mViews) {
         glNamedFramebufferTextureLayer(mFramebuffer.id(), GL_DEPTH_ATTACHMENT,
                 view.cube ? mMapsCube.id() : mMaps2D.id(), 0, view.layer);
+        const int size = view.cube ? mResolutionCube : mResolution2D;
+        glViewport(0, 0, size, size);
         const float clearDepth = 1.0f;
         glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &clearDepth);
         // Slope-scaled offset for hardware depth; cube faces write their own depth and are
@@ -174,15 +259,6 @@ void ShadowPass::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SHADOWS, mShadowTable.id());
 }
 
-std::vector<gl::MemoryItem> ShadowPass::memoryFor(int layers2D, int layersCube, int resolution) {
-    const int res2D = layers2D > 0 ? resolution : 1;
-    const int resCube = layersCube > 0 ? resolution : 1;
-    return {{"render/shadow/maps_2d",
-                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {res2D, res2D, std::max(layers2D, 1)}, 1)},
-            {"render/shadow/maps_cube",
-                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {resCube, resCube, 6 * std::max(layersCube, 1)}, 1)}};
-}
-
 std::vector<gl::MemoryItem> ShadowPass::memoryFor(const std::vector<scene::Light>& lights,
         const ShadowSettings& settings) {
     int layers2D = 0, layersCube = 0;
@@ -192,7 +268,11 @@ std::vector<gl::MemoryItem> ShadowPass::memoryFor(const std::vector<scene::Light
         (light.type == scene::LightType::Point || light.type == scene::LightType::Area ? layersCube
                                                                                         : layers2D) += 1;
     }
-    return memoryFor(layers2D, layersCube, settings.resolution);
+    const MapResolutions res = mapResolutions(lights, settings);
+    return {{"render/shadow/maps_2d",
+                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {res.flat, res.flat, std::max(layers2D, 1)}, 1)},
+            {"render/shadow/maps_cube",
+                    gl::textureBytes(GL_DEPTH_COMPONENT32F, {res.cube, res.cube, 6 * std::max(layersCube, 1)}, 1)}};
 }
 
 } // namespace gi::render

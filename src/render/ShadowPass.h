@@ -58,14 +58,12 @@ public:
     const std::vector<View>& views() const { return mViews; }
 
 private:
-    static std::vector<gl::MemoryItem> memoryFor(int layers2D, int layersCube, int resolution);
-
     gl::ProgramRef mProgram;
     gl::Texture mMaps2D, mMapsCube;
     gl::Buffer mShadowTable;
     gl::Framebuffer mFramebuffer;
     std::vector<View> mViews;
-    int mLayers2D = 0, mLayersCube = 0, mResolution = 1;
+    int mLayers2D = 0, mLayersCube = 0, mResolution2D = 1, mResolutionCube = 1;
     bool mDirty = true;
 };
 

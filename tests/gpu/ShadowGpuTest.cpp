@@ -120,5 +120,54 @@ INSTANTIATE_TEST_SUITE_P(LightTypes, ShadowGpuTest,
                 ShadowCase{"directional", directionalLight(), 0.2f, 0.5f}),
         [](const auto& info) { return std::string(info.param.name); });
 
+// A sun's map spans the whole scene, so in a large scene its texels are wide. Sponza (a 37 m
+// court) lost the shadows of its arches and lit them 10 % too bright with maps of 1024
+// texels: the PCF kernel and the normal offset, a few texels each, spread past small
+// occluders. Here an 8 cm plate 0.5 m above a 40 m floor, under a sun at 45 degrees: the
+// middle of its shadow must stay dark at the defaults (about 1 cm texels), and the floor
+// around it must keep its analytic light (no acne where the offset shrank with the texel).
+class SunShadowGpuTest : public GpuTest {};
+
+TEST_F(SunShadowGpuTest, KeepsASmallOccludersUmbraInALargeScene) {
+    scene::Scene s;
+    scene::Material white;
+    white.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    s.materials.push_back(white);
+    addPrimitive(s, horizontalSquare(20.0f, 0.0f));
+    addPrimitive(s, horizontalSquare(0.04f, 0.5f));
+    const scene::Light sun = directionalLight();
+    s.lights.push_back(sun);
+    // Straight down on the shadow, 0.5 m along +x from the plate (the sun's 45 degrees).
+    s.cameras.push_back(lookAtCamera({0.5f, 2.4f, 0.0f}, {0.5f, 0.0f, 0.0f}, 10.0f));
+    constexpr int kSize = 128;
+    RenderRequest request;
+    request.width = request.height = kSize;
+    request.settings.specular = 0.0f;
+    const core::Image image = renderScene(s, request);
+    ASSERT_FALSE(image.empty());
+    const scene::CameraView camera = scene::cameraFromScene(s.cameras[0], 1.0f, s.bounds);
+    const float lit = 0.5f / glm::pi<float>() * sun.intensity * -sun.direction.y;
+    int umbraProbes = 0, litProbes = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            glm::vec3 p;
+            if (!pixelOnPlaneY(camera, kSize, kSize, x, y, 0.0f, p)) continue;
+            const float r = std::max(std::abs(p.x - 0.5f), std::abs(p.z));
+            const float observed = image.at(x, y).r;
+            if (r < 0.01f) {
+                EXPECT_LT(observed, 0.05f * lit) << "probe at (" << p.x << ", " << p.z
+                                                 << ") should be in the plate's umbra";
+                ++umbraProbes;
+            } else if (r > 0.12f) {
+                EXPECT_NEAR(observed, lit, 0.01f * lit)
+                        << "probe at (" << p.x << ", " << p.z << ") should be lit";
+                ++litProbes;
+            }
+        }
+    }
+    EXPECT_GT(umbraProbes, 20);
+    EXPECT_GT(litProbes, 1000);
+}
+
 } // namespace
 } // namespace gi::test
