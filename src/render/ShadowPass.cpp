@@ -1,26 +1,16 @@
 #include "render/ShadowPass.h"
 
 #include "gl/Shared.h"
+#include "scene/SunWindow.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace gi::render {
 namespace {
-
-struct BoundingSphere {
-    glm::vec3 center{0.0f};
-    float radius = 1.0f;
-};
-
-BoundingSphere sphereOf(const scene::Aabb& bounds) {
-    if (bounds.empty()) return {};
-    return {bounds.center(), std::max(0.5f * glm::length(bounds.size()), 1e-6f)};
-}
 
 // Farthest the scene reaches from a point: the far plane of maps centred there.
 float farthestFrom(const glm::vec3& p, const scene::Aabb& bounds) {
@@ -36,66 +26,6 @@ float farthestFrom(const glm::vec3& p, const scene::Aabb& bounds) {
 
 glm::vec3 anyPerpendicularUp(const glm::vec3& direction) {
     return std::abs(direction.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-}
-
-// A sun's map over the scene: an orthographic view along the light whose window is the
-// outline of the scene's box seen from the light, turned so that one of the box's axes runs
-// up the map (whichever gives the smallest window), not the square around its bounding
-// sphere. Sponza's box (22.9 x 15.6 x 37.2 m) under a sun along (0.2, -1, 0.3) casts a
-// window 40.1 x 27.3 m against the sphere's 46.4 m square; the window's longer side sets the
-// texel, and with it the normal offset.
-struct OrthoFit {
-    glm::mat4 view{1.0f}, projection{1.0f};
-    float width = 1.0f;    // the larger side of the window, metres
-    float depth = 1.0f;    // near to far, metres
-};
-
-OrthoFit fitOrthoWithUp(const glm::vec3& direction, const scene::Aabb& bounds,
-        const BoundingSphere& sphere, const glm::vec3& up) {
-    OrthoFit fit;
-    const glm::vec3 eye = sphere.center - direction * (2.0f * sphere.radius);
-    fit.view = glm::lookAt(eye, sphere.center, up);
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner((i & 1) ? bounds.max.x : bounds.min.x,
-                (i & 2) ? bounds.max.y : bounds.min.y, (i & 4) ? bounds.max.z : bounds.min.z);
-        const glm::vec3 v = glm::vec3(fit.view * glm::vec4(corner, 1.0f));
-        lo = glm::min(lo, v);
-        hi = glm::max(hi, v);
-    }
-    // A margin of a thousandth keeps surfaces on the box's faces inside the window; the view
-    // looks down -z, so near and far are the corners' negated depths.
-    const glm::vec3 margin = 1e-3f * glm::max(hi - lo, glm::vec3(1e-6f));
-    lo -= margin;
-    hi += margin;
-    fit.projection = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z);
-    fit.width = std::max(hi.x - lo.x, hi.y - lo.y);
-    fit.depth = hi.z - lo.z;
-    return fit;
-}
-
-OrthoFit fitOrtho(const glm::vec3& direction, const scene::Aabb& bounds, const BoundingSphere& sphere) {
-    if (bounds.empty()) {
-        OrthoFit fit;
-        const float r = sphere.radius;
-        fit.view = glm::lookAt(sphere.center - direction * (2.0f * r), sphere.center,
-                anyPerpendicularUp(direction));
-        fit.projection = glm::ortho(-r, r, -r, r, 0.0f, 4.0f * r);
-        fit.width = 2.0f * r;
-        fit.depth = 4.0f * r;
-        return fit;
-    }
-    OrthoFit best;
-    bool found = false;
-    for (int axis = 0; axis < 3; ++axis) {
-        glm::vec3 up(0.0f);
-        up[axis] = 1.0f;
-        if (std::abs(glm::dot(up, direction)) > 0.99f) continue;   // looking along it
-        const OrthoFit fit = fitOrthoWithUp(direction, bounds, sphere, up);
-        if (!found || fit.width < best.width) best = fit;
-        found = true;
-    }
-    return best;
 }
 
 // Texels per side of the 2D maps (spot and directional lights share one array) and of the
@@ -154,7 +84,6 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
     std::vector<shader::GpuShadow> table(std::max<std::size_t>(lights.size(), 1));
     int layers2D = 0, layersCube = 0;
     const MapResolutions res = mapResolutions(lights, settings);
-    const BoundingSphere sphere = sphereOf(bounds);
     for (std::size_t i = 0; i < lights.size() && settings.enabled; ++i) {
         const scene::Light& light = lights[i];
         shader::GpuShadow& s = table[i];
@@ -188,10 +117,13 @@ void ShadowPass::setLights(const std::vector<scene::Light>& lights, const scene:
                     2.0f * std::tan(0.5f * fov) / float(res.flat));
             ++layers2D;
         } else {
-            const OrthoFit fit = fitOrtho(light.direction, bounds, sphere);
-            s.worldToShadow = fit.projection * fit.view;
+            // The window over the scene box's outline (scene/SunWindow.h); its longer side
+            // sets the texel the normal offset is measured in.
+            const scene::SunWindow window = scene::sunWindow(light.direction, bounds);
+            s.worldToShadow = window.projection * window.view;
             mViews.push_back({s.worldToShadow, glm::vec4(0.0f), layers2D, false});
-            s.params = glm::vec4(SHADOW_2D, float(layers2D), fit.depth, fit.width / float(res.flat));
+            s.params = glm::vec4(SHADOW_2D, float(layers2D), window.depth,
+                    std::max(window.size.x, window.size.y) / float(res.flat));
             s.bias.z = 1.0f;
             ++layers2D;
         }

@@ -1,5 +1,7 @@
 #include "scene/LightViews.h"
 
+#include "scene/SunWindow.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -24,13 +26,10 @@ glm::vec3 upFor(const glm::vec3& direction) {
 }
 
 LightView directionalView(int index, const Light& light, const Aabb& region, float pixels) {
-    const glm::vec3 center = region.center();
-    const float radius = std::max(0.5f * glm::length(region.size()), 1e-6f);
-    const glm::mat4 view = glm::lookAt(center - light.direction * (2.0f * radius), center,
-            upFor(light.direction));
-    const float pixel = 2.0f * radius / pixels;
-    return {index, glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius) * view,
-            light.direction, true, pixel * pixel, false};
+    const SunWindow window = sunWindow(light.direction, region);
+    const glm::vec2 pixel = window.size / pixels;
+    return {index, window.projection * window.view, light.direction, true, pixel.x * pixel.y,
+            false};
 }
 
 } // namespace
