@@ -14,7 +14,9 @@ map, then the signed error of each map (red: brighter than the path tracer, blue
 full strength at the path tracer's mean). A second table scores the final image (direct +
 indirect) of direct mode and of voxel GI against the path tracer's at 1, 2x2 and 4x4 samples
 per pixel: how much of the suite's final-image error (one sample per pixel) is the raster's
-pixel centres against the path tracer's pixel areas, and how much GI could still remove.
+pixel centres against the path tracer's pixel areas, and how much GI could still remove. A
+third scores VPL GI's indirect light at reflective shadow maps of 112 to 144 pixels a side:
+which VPLs the sun's map yields moves with its pixels, and with it the score of one render.
 """
 import argparse
 import os
@@ -63,6 +65,18 @@ def signed_error(image, ref, scale):
     return numpy.stack([numpy.clip(d, 0, 1), numpy.zeros_like(d), numpy.clip(-d, 0, 1)], -1)
 
 
+def vpl_spread(sponza):
+    ref = direct(sponza, "reference", {"reference.spp": 1024}, output="indirect").image[..., :3]
+    mask = common.reference_mask(ref)
+    print("\n| VPL GI, vpl.rsm_resolution | indirect rel. RMSE | indirect energy |")
+    print("|---|---:|---:|")
+    for pixels in (112, 120, 128, 136, 144):
+        image = direct(sponza, "vpl", {"vpl.rsm_resolution": pixels}, output="indirect").image
+        rmse, energy = common.errors(image[..., :3], ref, mask)
+        default = " (default)" if pixels == 128 else ""
+        print(f"| {pixels}{default} | {rmse:.3f} | {energy:.3f} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     common.add_bin_argument(parser)
@@ -98,6 +112,7 @@ def main():
     common.write_png(args.picture, numpy.concatenate(tiles, axis=1), scale=2)
     print(f"\nwrote {args.picture}")
     final_table(args.sponza)
+    vpl_spread(args.sponza)
 
 
 if __name__ == "__main__":
