@@ -379,25 +379,38 @@ TEST_F(VoxelGpuTest, VoxelsLocateTheirFlatSurface) {
 // coincident squares facing opposite ways cancel both the normal and the offset of the voxels
 // holding them (the surface lies on level 0's voxel centres, so their offsets average to zero
 // as well); without a marker those voxels would store an empty texel.
-TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem) {
+// At 32^3 and at 64^3, with small squares just past the level's middle in x and just short of
+// it in z, so the distances above them are counted from one side of the middle only.
+class EmptyDistanceGpuTest : public VoxelGpuTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(EmptyDistanceGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem) {
+    const int resolution = GetParam();
     scene::Scene scene;
     scene.materials.push_back(scene::Material{});
     scene.cameras.push_back(lookAtCamera({0.0f, 0.2f, 0.2f}, {0.0f, 0.0f, 0.0f}, 60.0f));
-    // One scene-centred level of 32^3 voxels 1/16 m wide.
+    // One scene-centred level of v^3 voxels 2/v m wide.
     Settings settings = thesisAllocation();
+    settings.voxel.resolution = resolution;
     settings.voxel.levels = 1;
     settings.voxel.sceneCentred = true;
     settings.voxel.extent = 2.0f;
-    constexpr float kCentreY = 1.0f / 32.0f;
+    const float kCentreY = 1.0f / float(resolution);
     scene::Primitive up = horizontalSquare(0.9f, kCentreY);
     scene::Primitive down = up;
     down.normals.assign(down.normals.size(), glm::vec3(0.0f, -1.0f, 0.0f));
     down.indices = {0, 1, 2, 0, 2, 3};
     addPrimitive(scene, up);
     addPrimitive(scene, down);
-    // A small square a voxel higher centres the scene's bounds, and so the level, a voxel
-    // edge above the pair: the pair lies on a row of voxel centres.
-    addPrimitive(scene, horizontalSquare(0.05f, 3.0f * kCentreY));
+    // Two small squares a voxel higher centre the scene's bounds, and so the level, a voxel
+    // edge above the pair: the pair lies on a row of voxel centres. One lies just past the
+    // level's middle in x, the other just short of it in z.
+    for (const glm::vec3 offset : {glm::vec3(0.051f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -0.051f)}) {
+        scene::Primitive small = horizontalSquare(0.05f, 3.0f * kCentreY);
+        for (glm::vec3& p : small.positions) p += offset;
+        small.localBounds = {};
+        for (const glm::vec3& p : small.positions) small.localBounds.extend(p);
+        addPrimitive(scene, small);
+    }
     addDefaults(scene);
     VoxelFrame frame(scene, settings, {32, 32});
     const voxel::CascadeVolume& volume = frame.manager().volume();
@@ -405,13 +418,32 @@ TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem) {
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
     const auto normal = readVolume(frame.manager().textures().normal, volume);
     const int v = volume.resolution();
-    std::vector<glm::ivec3> occupiedVoxels;
+    ASSERT_EQ(v, resolution);
+    std::vector<char> occupied(std::size_t(v) * v * v, 0);
+    std::size_t occupiedCount = 0;
     for (int z = 0; z < v; ++z)
         for (int y = 0; y < v; ++y)
             for (int x = 0; x < v; ++x) {
-                if (albedo[texelIndex(volume, {x, y, z}, 0)].a > 0.0f) occupiedVoxels.push_back({x, y, z});
+                if (albedo[texelIndex(volume, {x, y, z}, 0)].a > 0.0f) {
+                    occupied[(std::size_t(z) * v + y) * v + x] = 1;
+                    ++occupiedCount;
+                }
             }
     constexpr int kCap = 4;   // kEmptyDistanceCap
+    // The Chebyshev distance to the nearest occupied voxel, counted shell by shell.
+    const auto distanceAt = [&](int x, int y, int z) {
+        for (int r = 1; r <= kCap; ++r) {
+            for (int dz = -r; dz <= r; ++dz)
+                for (int dy = -r; dy <= r; ++dy)
+                    for (int dx = -r; dx <= r; ++dx) {
+                        if (std::max(std::abs(dx), std::max(std::abs(dy), std::abs(dz))) != r) continue;
+                        const int ox = x + dx, oy = y + dy, oz = z + dz;
+                        if (ox < 0 || oy < 0 || oz < 0 || ox >= v || oy >= v || oz >= v) continue;
+                        if (occupied[(std::size_t(oz) * v + oy) * v + ox]) return r;
+                    }
+        }
+        return kCap + 1;
+    };
     int cancelled = 0, wrongOccupied = 0, wrongEmpty = 0, far = 0;
     for (int z = 0; z < v; ++z)
         for (int y = 0; y < v; ++y)
@@ -424,22 +456,21 @@ TEST_F(VoxelGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem) {
                     if (!markedOccupied) ++wrongOccupied;
                     continue;
                 }
-                int distance = kCap + 1;
-                for (const glm::ivec3& o : occupiedVoxels) {
-                    const glm::ivec3 d = glm::abs(o - glm::ivec3(x, y, z));
-                    distance = std::min(distance, std::max(d.x, std::max(d.y, d.z)));
-                }
+                const int distance = distanceAt(x, y, z);
                 far += distance > kCap ? 1 : 0;
                 if (markedOccupied || std::lround(-texel.w * 127.0f) != distance) ++wrongEmpty;
             }
     std::printf("%zu occupied voxels, %d with cancelled normals; %d empty voxels farther than %d\n",
-            occupiedVoxels.size(), cancelled, far, kCap);
-    EXPECT_GT(occupiedVoxels.size(), 500u);
-    EXPECT_GT(cancelled, int(occupiedVoxels.size()) / 2) << "the two faces should cancel in most voxels";
+            occupiedCount, cancelled, far, kCap);
+    EXPECT_GT(occupiedCount, 500u);
+    EXPECT_GT(cancelled, int(occupiedCount) / 2) << "the two faces should cancel in most voxels";
     EXPECT_GT(far, 1000);
     EXPECT_EQ(wrongOccupied, 0) << "occupied voxels the walk would take for empty";
     EXPECT_EQ(wrongEmpty, 0) << "empty voxels whose texel gives the wrong distance";
 }
+
+INSTANTIATE_TEST_SUITE_P(Resolutions, EmptyDistanceGpuTest, ::testing::Values(32, 64),
+        [](const auto& info) { return "v" + std::to_string(info.param); });
 
 // The pyramid above the coarsest level averages its reflected light: mip m summed over its
 // texels holds 1/8^(m+1) of the coarsest level's rho E x coverage summed over its voxels, and
