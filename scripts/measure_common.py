@@ -48,6 +48,14 @@ def add_sponza_argument(parser):
         "VOXATLAS_SPONZA", os.path.join(ROOT, "..", "shared", "assets", "sponza", "Sponza.gltf")))
 
 
+def require_sponza(path):
+    """Exits with one line saying how to provide Sponza when it is not at `path`."""
+    if not os.path.exists(path):
+        print(f"Sponza not found at {path}: pass --sponza PATH or set VOXATLAS_SPONZA",
+              file=sys.stderr)
+        sys.exit(2)
+
+
 def use_binary(path):
     """Makes `path` the voxatlas that run() starts; exits when it is missing."""
     global BIN

@@ -46,8 +46,7 @@ def main():
     parser.add_argument("--picture", default=os.path.join(common.IMAGES, "sponza_sun_voxel_size.png"))
     args = parser.parse_args()
     common.use_binary(args.bin)
-    if not os.path.exists(args.sponza):
-        sys.exit(f"Sponza not found at {args.sponza}: pass --sponza PATH or set VOXATLAS_SPONZA")
+    common.require_sponza(args.sponza)
     import numpy
     header = "| configuration | " + " | ".join(f"sun {d} ({why})" for d, why in SUNS) + " |"
     rows = {name: [] for name, _ in CONFIGS}

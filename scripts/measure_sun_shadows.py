@@ -84,8 +84,7 @@ def main():
     parser.add_argument("--picture", default=os.path.join(common.IMAGES, "sponza_sun_shadows.png"))
     args = parser.parse_args()
     common.use_binary(args.bin)
-    if not os.path.exists(args.sponza):
-        sys.exit(f"Sponza not found at {args.sponza}: pass --sponza PATH or set VOXATLAS_SPONZA")
+    common.require_sponza(args.sponza)
     import numpy
     ref = direct(args.sponza, "reference", {"reference.spp": 1024}).image[..., :3]
     mask = common.reference_mask(ref)

@@ -29,6 +29,19 @@ scene::Scene occluderScene(const scene::Light& light) {
     return s;
 }
 
+// A Lambertian render of `s` from its camera 0, `size` pixels a side, and that camera.
+struct ProbedRender {
+    core::Image image;
+    scene::CameraView camera;
+};
+
+ProbedRender renderLambertian(const scene::Scene& s, int size) {
+    RenderRequest request;
+    request.width = request.height = size;
+    request.settings.specular = 0.0f;
+    return {renderScene(s, request), scene::cameraFromScene(s.cameras[0], 1.0f, s.bounds)};
+}
+
 struct ShadowCase {
     const char* name;
     scene::Light light;
@@ -42,12 +55,8 @@ TEST_P(ShadowGpuTest, OccluderCastsItsShadowAndNothingElse) {
     const ShadowCase& c = GetParam();
     const scene::Scene s = occluderScene(c.light);
     constexpr int kSize = 128;
-    RenderRequest request;
-    request.width = request.height = kSize;
-    request.settings.specular = 0.0f;
-    const core::Image image = renderScene(s, request);
+    const auto [image, camera] = renderLambertian(s, kSize);
     ASSERT_FALSE(image.empty());
-    const scene::CameraView camera = scene::cameraFromScene(s.cameras[0], 1.0f, s.bounds);
 
     int shadowProbes = 0, litProbes = 0;
     for (int y = 1; y < kSize; y += 3) {
@@ -140,12 +149,8 @@ TEST_F(SunShadowGpuTest, KeepsASmallOccludersUmbraInALargeScene) {
     // Straight down on the shadow, 0.5 m along +x from the plate (the sun's 45 degrees).
     s.cameras.push_back(lookAtCamera({0.5f, 2.4f, 0.0f}, {0.5f, 0.0f, 0.0f}, 10.0f));
     constexpr int kSize = 128;
-    RenderRequest request;
-    request.width = request.height = kSize;
-    request.settings.specular = 0.0f;
-    const core::Image image = renderScene(s, request);
+    const auto [image, camera] = renderLambertian(s, kSize);
     ASSERT_FALSE(image.empty());
-    const scene::CameraView camera = scene::cameraFromScene(s.cameras[0], 1.0f, s.bounds);
     const float lit = 0.5f / glm::pi<float>() * sun.intensity * -sun.direction.y;
     int umbraProbes = 0, litProbes = 0;
     for (int y = 0; y < kSize; ++y) {
