@@ -37,6 +37,10 @@ TRACE_MAIN = os.path.join("voxel", "cone_trace.frag")
 CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
 RING_LOOP = "for (int i = 0; i < 8; ++i) {"
 LIGHT_CALL = "reflected = coarsestLight("
+PYRAMID_READ = "textureLod(voxelPyramidTexture, uvw, lod);"
+PYRAMID_TEXEL = ("texelFetch(voxelPyramidTexture, clamp(ivec3(uvw * float(max((voxelResolution() / 2) "
+                 ">> int(lod), 1))), ivec3(0), ivec3(max((voxelResolution() / 2) >> int(lod), 1) - 1)), "
+                 "int(lod));")
 
 TRACE_CONE_DECL = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
 # The trace of Friduric's demo (the peer of results-performance.md) over the coarsest level:
@@ -72,6 +76,12 @@ PROFILE = {
     "no light reads": ("the light read where a cone meets a surface (coarsestLight: "
                        "filtered voxels and the pyramid)", [
         (LIGHT_CALL, "reflected = vec3(0.25) + 0.0 * (")]),
+    # The light read kept, its pyramid sample made cheaper (what the texture sample costs
+    # within the read): the same mip for every lane, or one texel fetch at the mip below.
+    "light read at one mip for all": ("the pyramid sample's per-lane mip: every lane reads "
+                                      "mip 2", [(PYRAMID_READ, "textureLod(voxelPyramidTexture, uvw, 2.0);")]),
+    "light read as one texel": ("the pyramid sample's filtering: one texel fetch at the mip "
+                                "below the cone's", [(PYRAMID_READ, PYRAMID_TEXEL)]),
     # Not a part switched off but the whole walk replaced: what the peer's trace costs in
     # this program (its accuracy: `--make NAME DIR`, then `voxatlas bench --suite quick`
     # with VOXATLAS_SHADER_DIR=DIR).
