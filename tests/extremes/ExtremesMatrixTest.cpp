@@ -214,6 +214,8 @@ std::vector<Case> cases() {
     c.push_back({"reject_shadow_budget", "64 point lights at shadow.resolution=8192 (96 GiB)",
             {Mode::Voxel}, [](const std::string& d) { return cornellWithLightGrid(d, 64); },
             set({"shadow.resolution=8192"}), 0, 0, false, true, "budget"});
+    c.push_back({"reject_sun_map", "shadow.sun_resolution=16384", kVoxel, cornell,
+            set({"shadow.sun_resolution=16384"}), 0, 0, false, true, "shadow.sun_resolution"});
     c.push_back({"reject_nan", "voxel.max_distance=nan", kVoxel, cornell,
             set({"voxel.max_distance=nan"}), 0, 0, false, true, "voxel.max_distance"});
     return c;
