@@ -17,13 +17,8 @@ namespace gi::render {
 
 bool FrameRenderer::shadowMapsFit(const std::vector<scene::Light>& lights,
         const ShadowSettings& settings, std::string& error) {
-    const bool anySun = std::any_of(lights.begin(), lights.end(), [](const scene::Light& l) {
-        return l.type == scene::LightType::Directional;
-    });
-    const std::string suns =
-            anySun ? ", suns at shadow.sun_resolution " + std::to_string(settings.sunResolution) : "";
-    return gl::fitsResourceBudget(std::to_string(lights.size()) + " light(s) at shadow.resolution " +
-                    std::to_string(settings.resolution) + suns + " (shadow maps)",
+    return gl::fitsResourceBudget(std::to_string(lights.size()) + " light(s) at " +
+                    ShadowPass::resolutionText(lights, settings) + " (shadow maps)",
             ShadowPass::memoryFor(lights, settings), error);
 }
 

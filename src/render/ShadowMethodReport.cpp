@@ -51,13 +51,7 @@ ShadowMethodReport plannedShadowMethod(const scene::Scene& scene,
     const bool rays = method == SHADOW_METHOD_BVH || method == SHADOW_METHOD_LINESPACE;
     report.rays = rays ? settings.shadow.rays : 0;
     if (method == SHADOW_METHOD_SHADOWMAP) {
-        const bool anySun = std::any_of(lights.begin(), lights.end(), [](const scene::Light& l) {
-            return l.type == scene::LightType::Directional;
-        });
-        report.structure = "a map per light at shadow.resolution " +
-                std::to_string(settings.shadow.resolution) +
-                (anySun ? ", suns at shadow.sun_resolution " + std::to_string(settings.shadow.sunResolution)
-                        : std::string());
+        report.structure = "a map per light at " + ShadowPass::resolutionText(lights, settings.shadow);
         report.bytes = gl::totalBytes(ShadowPass::memoryFor(lights, settings.shadow));
     } else if (method == SHADOW_METHOD_VOXEL) {
         const int levels = kShadowConeLevels;

@@ -191,6 +191,16 @@ void ShadowPass::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SHADOWS, mShadowTable.id());
 }
 
+std::string ShadowPass::resolutionText(const std::vector<scene::Light>& lights,
+        const ShadowSettings& settings) {
+    const bool anySun = std::any_of(lights.begin(), lights.end(), [](const scene::Light& l) {
+        return l.type == scene::LightType::Directional;
+    });
+    return "shadow.resolution " + std::to_string(settings.resolution) +
+            (anySun ? ", suns at shadow.sun_resolution " + std::to_string(settings.sunResolution)
+                    : std::string());
+}
+
 std::vector<gl::MemoryItem> ShadowPass::memoryFor(const std::vector<scene::Light>& lights,
         const ShadowSettings& settings) {
     int layers2D = 0, layersCube = 0;

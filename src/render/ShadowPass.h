@@ -18,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
 #include <vector>
 
 namespace gi::render {
@@ -42,6 +43,11 @@ public:
 
     // Forces the next execute to re-render (geometry moved).
     void invalidate() { mDirty = true; }
+
+    // The map sizes setLights(lights, ..., settings) would use, for messages and reports:
+    // "shadow.resolution N", and ", suns at shadow.sun_resolution M" when a light is a sun.
+    [[nodiscard]] static std::string resolutionText(const std::vector<scene::Light>& lights,
+            const ShadowSettings& settings);
 
     // What setLights(lights, ..., settings) would allocate, before allocating it.
     [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(const std::vector<scene::Light>& lights,
