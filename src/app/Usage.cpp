@@ -12,7 +12,8 @@ namespace {
 std::string modeChoices() {
     std::string choices;
     for (const render::ModeEntry& entry : render::modeCatalog()) {
-        choices += (choices.empty() ? "" : "|") + std::string(entry.name);
+        if (!choices.empty()) choices += '|';
+        choices += entry.name;
     }
     return choices;
 }
