@@ -9,7 +9,7 @@ layout(std140, binding = BIND_UBO_FRAME) uniform FrameBlock {
 };
 
 // The frame's switches. A program built for one setting of them (FRAME_SHADING_MODEL,
-// FRAME_SHADOW_METHOD, FRAME_SHADOWS; gl/ProgramVariants.h) reads them as constants and the
+// FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS; gl/ProgramVariants.h) reads them as constants and the
 // compiler drops the paths it never takes; without them they come from the frame uniforms.
 int shadingModel() {
 #ifdef FRAME_SHADING_MODEL
@@ -24,6 +24,17 @@ int shadowMethod() {
     return FRAME_SHADOW_METHOD;
 #else
     return int(frame.shadowing.x);
+#endif
+}
+
+// Whether some light has a shadow map of `kind` (SHADOW_2D, SHADOW_CUBE). llvmpipe runs every
+// branch of a shader for all pixels of a group whenever one of them takes it, so a filter no
+// light needs costs as much as one that runs (results-performance.md).
+bool shadowMapsOfKind(int kind) {
+#ifdef FRAME_SHADOW_MAPS
+    return (FRAME_SHADOW_MAPS & (1 << kind)) != 0;
+#else
+    return true;
 #endif
 }
 

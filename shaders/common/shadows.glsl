@@ -7,6 +7,7 @@
 #ifndef GI_SHADOWS_GLSL
 #define GI_SHADOWS_GLSL
 
+#include "frame.glsl"
 #include "lighting.glsl"
 
 layout(std430, binding = BIND_SSBO_SHADOWS) readonly buffer ShadowBlock {
@@ -25,7 +26,7 @@ float shadowVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLi
     float texel = ortho ? s.params.w : s.params.w * distanceToLight;
     vec3 p = position + n * (s.bias.x * texel);
 
-    if (kind == SHADOW_2D) {
+    if (kind == SHADOW_2D && shadowMapsOfKind(SHADOW_2D)) {
         vec4 clip = s.worldToShadow * vec4(p, 1.0);
         vec3 ndc = clip.xyz / clip.w;
         vec3 uvz = ndc * 0.5 + 0.5;
@@ -42,6 +43,7 @@ float shadowVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLi
         return sum / 9.0;
     }
 
+    if (!shadowMapsOfKind(SHADOW_CUBE)) return 1.0;   // no light has one: never reached
     vec3 fromLight = p - lights[lightIndex].positionAndType.xyz;
     float distance = length(fromLight);
     float reference = distance / s.params.z;

@@ -279,9 +279,10 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
         glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, occupancy->coverage.id());
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy->voxelUniforms.id());
     }
+    FrameSwitches switches = FrameSwitches::of(mSettings);
+    switches.shadowMaps = mShadows.mapKinds();
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
-                             mSettings.depthPrepass, gi.indirectSpecular,
-                             FrameSwitches::of(mSettings)},
+                             mSettings.depthPrepass, gi.indirectSpecular, switches},
             {mTarget}, profiler);
 }
 

@@ -1,6 +1,7 @@
 // The frame's switches as the shaders read them (shaders/common/frame.glsl: shadingModel(),
-// shadowMethod(), shadowsApplied()): written into the frame uniforms every frame, and given
-// as #defines to the passes that compile a program per setting of them (gl/ProgramVariants.h).
+// shadowMethod(), shadowsApplied(), shadowMapsOfKind()): written into the frame uniforms
+// every frame (the kinds of shadow map excepted), and given as #defines to the passes that
+// compile a program per setting of them (gl/ProgramVariants.h).
 #pragma once
 
 #include "core/Settings.h"
@@ -14,9 +15,12 @@ struct FrameSwitches {
     int shadingModel = 0;   // SHADING_*
     int shadowMethod = 0;   // SHADOW_METHOD_*
     bool shadows = true;    // shadow.enabled
+    // Bit (1 << SHADOW_2D) and (1 << SHADOW_CUBE): the kinds of shadow map some light has
+    // (ShadowPass::mapKinds); the filter of a kind no light has is compiled out.
+    int shadowMaps = ~0;
 
     [[nodiscard]] static FrameSwitches of(const Settings& settings);
-    // FRAME_SHADING_MODEL, FRAME_SHADOW_METHOD, FRAME_SHADOWS.
+    // FRAME_SHADING_MODEL, FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS.
     [[nodiscard]] std::vector<std::string> defines() const;
 };
 

@@ -217,4 +217,8 @@ std::vector<gl::MemoryItem> ShadowPass::memoryFor(const std::vector<scene::Light
                     gl::textureBytes(GL_DEPTH_COMPONENT32F, {res.cube, res.cube, 6 * std::max(layersCube, 1)}, 1)}};
 }
 
+int ShadowPass::mapKinds() const {
+    return (mLayers2D > 0 ? 1 << SHADOW_2D : 0) | (mLayersCube > 0 ? 1 << SHADOW_CUBE : 0);
+}
+
 } // namespace gi::render

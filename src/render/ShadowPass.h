@@ -41,6 +41,10 @@ public:
     // Binds the maps and the GpuShadow table at their shared.h slots.
     void bind() const override;
 
+    // The kinds of map the planned lights use: bit (1 << SHADOW_2D) for spot and directional
+    // maps, (1 << SHADOW_CUBE) for cube maps (FrameSwitches::shadowMaps).
+    [[nodiscard]] int mapKinds() const;
+
     // Forces the next execute to re-render (geometry moved).
     void invalidate() { mDirty = true; }
 

@@ -42,6 +42,34 @@ ProbedRender renderLambertian(const scene::Scene& s, int size) {
     return {renderScene(s, request), scene::cameraFromScene(s.cameras[0], 1.0f, s.bounds)};
 }
 
+// Calls probe(p, observed red radiance) at every third pixel of the render that shows the floor
+// point p beside the occluder, no further than maxFromCenter from the floor's centre along
+// either axis: points seen through the occluder show the occluder itself, not the floor.
+template <typename Probe>
+void forFloorProbes(const ProbedRender& render, int size, float maxFromCenter, Probe probe) {
+    const float hiddenByOccluder = 0.2f * 2.4f / (2.4f - 0.5f);
+    for (int y = 1; y < size; y += 3) {
+        for (int x = 1; x < size; x += 3) {
+            glm::vec3 p;
+            if (!pixelOnPlaneY(render.camera, size, size, x, y, 0.0f, p)) continue;
+            const float fromCenter = std::max(std::abs(p.x), std::abs(p.z));
+            if (fromCenter < hiddenByOccluder + 0.03f || fromCenter > maxFromCenter) continue;
+            probe(p, render.image.at(x, y).r);
+        }
+    }
+}
+
+// The Lambertian floor's unshadowed radiance at p from a point or spot light (inside its inner
+// cone) or a directional light, for albedo rho.
+float unshadowedRadiance(const scene::Light& light, glm::vec3 p, float rho) {
+    if (light.type == scene::LightType::Directional) {
+        return rho / glm::pi<float>() * light.intensity * -light.direction.y;
+    }
+    const glm::vec3 toLight = light.position - p;
+    const float d2 = glm::dot(toLight, toLight);
+    return rho / glm::pi<float>() * light.intensity * (toLight.y / std::sqrt(d2)) / d2;
+}
+
 struct ShadowCase {
     const char* name;
     scene::Light light;
@@ -55,43 +83,26 @@ TEST_P(ShadowGpuTest, OccluderCastsItsShadowAndNothingElse) {
     const ShadowCase& c = GetParam();
     const scene::Scene s = occluderScene(c.light);
     constexpr int kSize = 128;
-    const auto [image, camera] = renderLambertian(s, kSize);
-    ASSERT_FALSE(image.empty());
+    const ProbedRender render = renderLambertian(s, kSize);
+    ASSERT_FALSE(render.image.empty());
 
     int shadowProbes = 0, litProbes = 0;
-    for (int y = 1; y < kSize; y += 3) {
-        for (int x = 1; x < kSize; x += 3) {
-            glm::vec3 p;
-            if (!pixelOnPlaneY(camera, kSize, kSize, x, y, 0.0f, p)) continue;
-            const float fromCenter = std::max(std::abs(p.x), std::abs(p.z));
-            // Points seen through the occluder show the occluder itself, not the floor.
-            const float hiddenByOccluder = 0.2f * 2.4f / (2.4f - 0.5f);
-            if (fromCenter < hiddenByOccluder + 0.03f || fromCenter > 0.95f) continue;
-            const float r = std::max(std::abs(p.x - c.umbraCenterX), std::abs(p.z));
-            const float observed = image.at(x, y).r;
-            if (r < c.umbraHalfSize - 0.05f) {
-                // Deep in the umbra: no direct light at all. 1e-6 is float noise only.
-                EXPECT_LT(observed, 1e-6f) << c.name << ": probe at (" << p.x << ", " << p.z
-                                           << ") should be in shadow";
-                ++shadowProbes;
-            } else if (r > c.umbraHalfSize + 0.05f) {
-                // Outside the penumbra of the PCF kernel (a few shadow texels wide): the
-                // unshadowed value, to 1% (the analytic-plane tolerance).
-                float expected = 0.0f;
-                const float rho = 0.5f;
-                if (c.light.type == scene::LightType::Directional) {
-                    expected = rho / glm::pi<float>() * c.light.intensity * -c.light.direction.y;
-                } else {
-                    const glm::vec3 toLight = c.light.position - p;
-                    const float d2 = glm::dot(toLight, toLight);
-                    expected = rho / glm::pi<float>() * c.light.intensity * (toLight.y / std::sqrt(d2)) / d2;
-                }
-                EXPECT_NEAR(observed, expected, 0.01f * expected)
-                        << c.name << ": probe at (" << p.x << ", " << p.z << ") should be lit";
-                ++litProbes;
-            }
+    forFloorProbes(render, kSize, 0.95f, [&](glm::vec3 p, float observed) {
+        const float r = std::max(std::abs(p.x - c.umbraCenterX), std::abs(p.z));
+        if (r < c.umbraHalfSize - 0.05f) {
+            // Deep in the umbra: no direct light at all. 1e-6 is float noise only.
+            EXPECT_LT(observed, 1e-6f) << c.name << ": probe at (" << p.x << ", " << p.z
+                                       << ") should be in shadow";
+            ++shadowProbes;
+        } else if (r > c.umbraHalfSize + 0.05f) {
+            // Outside the penumbra of the PCF kernel (a few shadow texels wide): the
+            // unshadowed value, to 1% (the analytic-plane tolerance).
+            const float expected = unshadowedRadiance(c.light, p, 0.5f);
+            EXPECT_NEAR(observed, expected, 0.01f * expected)
+                    << c.name << ": probe at (" << p.x << ", " << p.z << ") should be lit";
+            ++litProbes;
         }
-    }
+    });
     EXPECT_GT(shadowProbes, 20) << c.name;
     EXPECT_GT(litProbes, 100) << c.name;
 }
@@ -128,6 +139,39 @@ INSTANTIATE_TEST_SUITE_P(LightTypes, ShadowGpuTest,
                 ShadowCase{"spot", spotLight(), 0.4f, 0.0f},
                 ShadowCase{"directional", directionalLight(), 0.2f, 0.5f}),
         [](const auto& info) { return std::string(info.param.name); });
+
+// A point light (a cube map) and a sun (a 2D map) in one scene: the forward pass is compiled
+// for the kinds of map the lights have (FrameSwitches::shadowMaps), so each filter must still
+// run for its own light when both kinds are present. Deep in the point light's umbra only the
+// sun's analytic light may arrive, and deep in the sun's shadow only the point light's.
+class MixedShadowGpuTest : public GpuTest {};
+
+TEST_F(MixedShadowGpuTest, PointAndSunShadowEachOtherInOneScene) {
+    scene::Scene s = occluderScene(pointLight());
+    s.lights.push_back(directionalLight());
+    constexpr int kSize = 128;
+    const ProbedRender render = renderLambertian(s, kSize);
+    ASSERT_FALSE(render.image.empty());
+    int pointUmbraProbes = 0, sunShadowProbes = 0;
+    forFloorProbes(render, kSize, 1.0f, [&](glm::vec3 p, float observed) {
+        const float fromCenter = std::max(std::abs(p.x), std::abs(p.z));
+        const float pointLight = unshadowedRadiance(s.lights[0], p, 0.5f);
+        const float sunLight = unshadowedRadiance(s.lights[1], p, 0.5f);
+        // The point light's umbra (0.4 m half-size about the centre) away from the sun's
+        // shadow (0.2 m half-size about x = 0.5), and the other way round.
+        if (fromCenter < 0.35f && p.x < 0.25f) {
+            EXPECT_NEAR(observed, sunLight, 0.01f * sunLight)
+                    << "probe at (" << p.x << ", " << p.z << "): the sun's light only";
+            ++pointUmbraProbes;
+        } else if (std::abs(p.x - 0.5f) < 0.15f && std::abs(p.z) < 0.15f && fromCenter > 0.45f) {
+            EXPECT_NEAR(observed, pointLight, 0.01f * pointLight)
+                    << "probe at (" << p.x << ", " << p.z << "): the point light's only";
+            ++sunShadowProbes;
+        }
+    });
+    EXPECT_GT(pointUmbraProbes, 10);
+    EXPECT_GT(sunShadowProbes, 5);
+}
 
 // A sun's map spans the whole scene, so in a large scene its texels are wide. Sponza (a 37 m
 // court) lost the shadows of its arches and lit them 10 % too bright with maps of 1024
