@@ -22,9 +22,15 @@ SunWindow windowWithUp(const glm::vec3& direction, const Aabb& box, const glm::v
         lo = glm::min(lo, v);
         hi = glm::max(hi, v);
     }
-    // A margin of a thousandth keeps surfaces on the box's faces inside the window; the view
-    // looks down -z, so near and far are the corners' negated depths.
-    const glm::vec3 margin = 1e-3f * glm::max(hi - lo, glm::vec3(1e-6f));
+    // A margin of a thousandth keeps surfaces on the box's faces inside the window (a
+    // thousandth of the box's diagonal across a side the box is flat along). In depth it is a
+    // hundredth of the diagonal at least: shading looks the map up from points pushed a few
+    // texels off their surfaces (shadows.glsl), which a flat box (a lone floor under a sun
+    // overhead) would otherwise put outside a window no deeper than the floor, all in
+    // shadow. The view looks down -z, so near and far are the corners' negated depths.
+    const float diagonal = 2.0f * radius;
+    glm::vec3 margin = 1e-3f * glm::max(hi - lo, glm::vec3(1e-3f * diagonal));
+    margin.z = std::max(margin.z, 1e-2f * diagonal);
     lo -= margin;
     hi += margin;
     w.projection = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z);

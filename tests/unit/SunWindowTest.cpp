@@ -53,7 +53,23 @@ TEST(SunWindow, IsTheBoxOutlineWithABoxAxisUpTheWindow) {
     const SunWindow down = sunWindow(glm::vec3(0.0f, -1.0f, 0.0f), flat);
     EXPECT_NEAR(std::max(down.size.x, down.size.y), 4.0f * 1.002f, 1e-3f);
     EXPECT_NEAR(std::min(down.size.x, down.size.y), 2.0f * 1.002f, 1e-3f);
-    EXPECT_NEAR(down.depth, 1.0f * 1.002f, 1e-3f);
+    // In depth a hundredth of the diagonal (4.58 m) on either side.
+    EXPECT_NEAR(down.depth, 1.0f + 2.0f * 0.01f * glm::length(flat.size()), 1e-3f);
+}
+
+TEST(SunWindow, LeavesRoomInDepthAboveAndBelowAFlatScene) {
+    // A lone 2 m floor under a sun overhead: the box has no height, and shading looks the map
+    // up from points pushed a few texels off the floor (1.5 texels of 2 m / 4096 is 0.7 mm;
+    // 1 cm here). Those must lie inside the window's depth, not beyond its near plane.
+    Aabb floor;
+    floor.min = {-1.0f, 0.0f, -1.0f};
+    floor.max = {1.0f, 0.0f, 1.0f};
+    const SunWindow w = sunWindow(glm::vec3(0.0f, -1.0f, 0.0f), floor);
+    EXPECT_GT(w.depth, 0.05f);
+    for (const float height : {-0.01f, 0.0f, 0.01f}) {
+        const glm::vec4 clip = w.projection * w.view * glm::vec4(0.3f, height, -0.2f, 1.0f);
+        EXPECT_LT(std::abs(clip.z / clip.w), 0.9f) << "a point " << height << " m off the floor";
+    }
 }
 
 } // namespace
