@@ -18,7 +18,8 @@ std::vector<std::string> FrameSwitches::defines() const {
     return {"FRAME_SHADING_MODEL " + std::to_string(shadingModel),
             "FRAME_SHADOW_METHOD " + std::to_string(shadowMethod),
             std::string("FRAME_SHADOWS ") + (shadows ? "1" : "0"),
-            "FRAME_SHADOW_MAPS " + std::to_string(shadowMaps)};
+            "FRAME_SHADOW_MAPS " + std::to_string(shadowMaps),
+            "FRAME_MATERIAL_TEXTURES " + std::to_string(materialTextures)};
 }
 
 } // namespace gi::render

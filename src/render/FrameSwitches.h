@@ -1,7 +1,8 @@
 // The frame's switches as the shaders read them (shaders/common/frame.glsl: shadingModel(),
-// shadowMethod(), shadowsApplied(), shadowMapsOfKind()): written into the frame uniforms
-// every frame (the kinds of shadow map excepted), and given as #defines to the passes that
-// compile a program per setting of them (gl/ProgramVariants.h).
+// shadowMethod(), shadowsApplied(), shadowMapsOfKind(); material.glsl:
+// materialTexturesOfKind()): written into the frame uniforms every frame (the kinds of shadow
+// map and material texture excepted), and given as #defines to the passes that compile a
+// program per setting of them (gl/ProgramVariants.h).
 #pragma once
 
 #include "core/Settings.h"
@@ -18,9 +19,13 @@ struct FrameSwitches {
     // Bit (1 << SHADOW_2D) and (1 << SHADOW_CUBE): the kinds of shadow map some light has
     // (ShadowPass::mapKinds); the filter of a kind no light has is compiled out.
     int shadowMaps = ~0;
+    // MATERIAL_TEXTURES_* bits: the kinds of texture some material has
+    // (GpuScene::textureKinds); the lookups of a kind no material has are compiled out.
+    int materialTextures = ~0;
 
     [[nodiscard]] static FrameSwitches of(const Settings& settings);
-    // FRAME_SHADING_MODEL, FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS.
+    // FRAME_SHADING_MODEL, FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS,
+    // FRAME_MATERIAL_TEXTURES.
     [[nodiscard]] std::vector<std::string> defines() const;
 };
 

@@ -99,6 +99,13 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     attribute(ATTR_COLOR, 4, offsetof(SceneVertex, color));
 }
 
+int GpuScene::textureKinds() const {
+    int kinds = 0;
+    for (int texture : mBaseColorTexture) kinds |= texture >= 0 ? MATERIAL_TEXTURES_BASE_COLOR : 0;
+    for (int texture : mEmissiveTexture) kinds |= texture >= 0 ? MATERIAL_TEXTURES_EMISSIVE : 0;
+    return kinds;
+}
+
 void GpuScene::uploadMaterials(const Scene& scene) {
     // One memory-report row for them all (the white fallback too), however many there are.
     const gl::MemoryGroup textures("scene/textures");

@@ -70,6 +70,8 @@ public:
     // Binds the light table and the area lights' triangles (lighting.glsl reads both).
     void bindLights() const;
     const gl::Buffer& materialBuffer() const { return mMaterials; }
+    // MATERIAL_TEXTURES_* bits: the kinds of texture some material has.
+    int textureKinds() const;
     int lightCount() const { return mLightCount; }
     const Aabb& bounds() const { return mBounds; }
 
