@@ -20,6 +20,16 @@ in VertexData { VERTEX_DATA_MEMBERS } vin;
 layout(location = 0) out vec4 outIndirect;
 layout(location = 1) out vec4 outSpecular;   // only with SHADING_GLTF (ConeTracePass)
 
+// Whether the specular cone is traced: ConeTracePass builds the trace with it for glossy
+// materials (material.model=gltf) and without it otherwise.
+bool traceSpecularCone() {
+#ifdef CONE_TRACE_SPECULAR
+    return CONE_TRACE_SPECULAR != 0;
+#else
+    return shadingModel() == SHADING_GLTF;
+#endif
+}
+
 // A strided trace (TraceReusePass.h) covers pixel (stride x + y, stride y + z) of the full
 // trace with its pixel (x, y): the ring's dither follows the full trace's pixel.
 layout(location = LOC_CONE_TRACE_PATTERN) uniform ivec3 tracePattern;
@@ -55,7 +65,7 @@ void main() {
     }
     vec3 irradiance = coneIrradiance(origin, n, ringTurn, voxel.trace.y);
     outIndirect = vec4(irradiance, viewDepth);
-    if (shadingModel() == SHADING_GLTF) {
+    if (traceSpecularCone()) {
         vec3 v = normalize(frame.cameraPosition.xyz - vin.position);
         vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
         GltfSurface s = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);

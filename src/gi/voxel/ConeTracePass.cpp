@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace gi::voxel {
 
@@ -51,8 +52,12 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_MATERIALS, in.scene.materialBuffer().id());
     const VoxelTextures& voxels = in.textures;
-    const GLuint program = mPrograms.id(
-            VoxelShape{voxels.resolution, voxels.levels, voxels.anisotropic}.defines());
+    // Built per cascade shape and per use of the specular cone: llvmpipe runs the glossy
+    // branch's shading for every pixel of a group whenever the branch exists.
+    std::vector<std::string> defines =
+            VoxelShape{voxels.resolution, voxels.levels, voxels.anisotropic}.defines();
+    defines.push_back(std::string("CONE_TRACE_SPECULAR ") + (in.specular ? "1" : "0"));
+    const GLuint program = mPrograms.id(defines);
     // Pixel x of the strided image stands for pixel stride x + phase of the whole trace:
     // shifting NDC by (1 - (2 phase + 1) / stride) / size puts its centre on that pixel's.
     const glm::vec2 offset =
