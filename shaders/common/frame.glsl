@@ -9,8 +9,9 @@ layout(std140, binding = BIND_UBO_FRAME) uniform FrameBlock {
 };
 
 // The frame's switches. A program built for one setting of them (FRAME_SHADING_MODEL,
-// FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS; gl/ProgramVariants.h) reads them as constants and the
-// compiler drops the paths it never takes; without them they come from the frame uniforms.
+// FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS; gl/ProgramVariants.h) reads them as
+// constants and the compiler drops the paths it never takes; without them they come from the
+// frame uniforms (the kinds of shadow map: all present).
 int shadingModel() {
 #ifdef FRAME_SHADING_MODEL
     return FRAME_SHADING_MODEL;

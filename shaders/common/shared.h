@@ -321,10 +321,11 @@
 #define SHADOW_2D                   1
 #define SHADOW_CUBE                 2
 
-// GpuMaterial.flags.y bits.
 // Kinds of material texture a scene has (FRAME_MATERIAL_TEXTURES, GpuScene::textureKinds).
 #define MATERIAL_TEXTURES_BASE_COLOR 1
 #define MATERIAL_TEXTURES_EMISSIVE  2
+
+// GpuMaterial.flags.y bits.
 #define MATERIAL_EMISSIVE_TEXTURE   1   // the emission is multiplied by the emissive texture
 #define MATERIAL_EMITS_AS_LIGHT     2   // its emission is an area light's (LIGHT_AREA): passes
                                         // that shade with lights must not count it again
