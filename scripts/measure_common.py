@@ -56,6 +56,21 @@ def require_sponza(path):
         sys.exit(2)
 
 
+def sponza_picture_arguments(doc, picture):
+    """The command line of a script that measures Sponza and draws one picture (--bin,
+    --sponza, --picture, default docs/images/`picture`), parsed; the binary taken into use and
+    Sponza required."""
+    import argparse
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    add_bin_argument(parser)
+    add_sponza_argument(parser)
+    parser.add_argument("--picture", default=os.path.join(IMAGES, picture))
+    args = parser.parse_args()
+    use_binary(args.bin)
+    require_sponza(args.sponza)
+    return args
+
+
 def use_binary(path):
     """Makes `path` the voxatlas that run() starts; exits when it is missing."""
     global BIN

@@ -14,7 +14,6 @@ elevation) and writes the picture: one row per sun, left to right the path trace
 default plan, 64^3 and 128^3, each row at the exposure that shows the path tracer's mean at
 0.2.
 """
-import argparse
 import os
 import sys
 
@@ -40,13 +39,7 @@ def indirect(sponza, mode, sun, settings):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    common.add_bin_argument(parser)
-    common.add_sponza_argument(parser)
-    parser.add_argument("--picture", default=os.path.join(common.IMAGES, "sponza_sun_voxel_size.png"))
-    args = parser.parse_args()
-    common.use_binary(args.bin)
-    common.require_sponza(args.sponza)
+    args = common.sponza_picture_arguments(__doc__, "sponza_sun_voxel_size.png")
     import numpy
     header = "| configuration | " + " | ".join(f"sun {d} ({why})" for d, why in SUNS) + " |"
     rows = {name: [] for name, _ in CONFIGS}

@@ -18,7 +18,6 @@ pixel centres against the path tracer's pixel areas, and how much GI could still
 third scores VPL GI's indirect light at reflective shadow maps of 112 to 144 pixels a side:
 which VPLs the sun's map yields moves with its pixels, and with it the score of one render.
 """
-import argparse
 import os
 import sys
 
@@ -78,13 +77,7 @@ def vpl_spread(sponza):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    common.add_bin_argument(parser)
-    common.add_sponza_argument(parser)
-    parser.add_argument("--picture", default=os.path.join(common.IMAGES, "sponza_sun_shadows.png"))
-    args = parser.parse_args()
-    common.use_binary(args.bin)
-    common.require_sponza(args.sponza)
+    args = common.sponza_picture_arguments(__doc__, "sponza_sun_shadows.png")
     import numpy
     ref = direct(args.sponza, "reference", {"reference.spp": 1024}).image[..., :3]
     mask = common.reference_mask(ref)

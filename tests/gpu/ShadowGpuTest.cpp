@@ -12,13 +12,16 @@
 namespace gi::test {
 namespace {
 
-scene::Scene occluderScene(const scene::Light& light) {
+// A floor of albedo 0.5 (floorHalf metres each side of the origin) under a square occluder
+// (plateHalf) 0.5 m above it, lit by `light`, seen straight down from 2.4 m.
+scene::Scene occluderScene(const scene::Light& light, float floorHalf = 1.0f,
+        float plateHalf = 0.2f) {
     scene::Scene s;
     scene::Material white;
     white.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
     s.materials.push_back(white);
-    addPrimitive(s, horizontalSquare(1.0f, 0.0f));
-    addPrimitive(s, horizontalSquare(0.2f, 0.5f));
+    addPrimitive(s, horizontalSquare(floorHalf, 0.0f));
+    addPrimitive(s, horizontalSquare(plateHalf, 0.5f));
     s.lights.push_back(light);
     scene::Camera camera;
     // Straight down from above the light, so the floor fills the view around the occluder.
@@ -182,16 +185,10 @@ TEST_F(MixedShadowGpuTest, PointAndSunShadowEachOtherInOneScene) {
 class SunShadowGpuTest : public GpuTest {};
 
 TEST_F(SunShadowGpuTest, KeepsASmallOccludersUmbraInALargeScene) {
-    scene::Scene s;
-    scene::Material white;
-    white.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    s.materials.push_back(white);
-    addPrimitive(s, horizontalSquare(20.0f, 0.0f));
-    addPrimitive(s, horizontalSquare(0.04f, 0.5f));
     const scene::Light sun = directionalLight();
-    s.lights.push_back(sun);
+    scene::Scene s = occluderScene(sun, 20.0f, 0.04f);
     // Straight down on the shadow, 0.5 m along +x from the plate (the sun's 45 degrees).
-    s.cameras.push_back(lookAtCamera({0.5f, 2.4f, 0.0f}, {0.5f, 0.0f, 0.0f}, 10.0f));
+    s.cameras = {lookAtCamera({0.5f, 2.4f, 0.0f}, {0.5f, 0.0f, 0.0f}, 10.0f)};
     constexpr int kSize = 128;
     const auto [image, camera] = renderLambertian(s, kSize);
     ASSERT_FALSE(image.empty());
