@@ -56,15 +56,17 @@ def require_sponza(path):
         sys.exit(2)
 
 
-def sponza_picture_arguments(doc, picture):
+def sponza_picture_arguments(doc, picture, flags=()):
     """The command line of a script that measures Sponza and draws one picture (--bin,
-    --sponza, --picture, default docs/images/`picture`), parsed; the binary taken into use and
-    Sponza required."""
+    --sponza, --picture, default docs/images/`picture`, and the boolean `flags`: (name, help)
+    pairs), parsed; the binary taken into use and Sponza required."""
     import argparse
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     add_bin_argument(parser)
     add_sponza_argument(parser)
     parser.add_argument("--picture", default=os.path.join(IMAGES, picture))
+    for name, text in flags:
+        parser.add_argument(name, action="store_true", help=text)
     args = parser.parse_args()
     use_binary(args.bin)
     require_sponza(args.sponza)

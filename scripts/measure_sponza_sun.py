@@ -8,11 +8,13 @@ sponza_sun view (assets/scene_suite/README.md); the indirect term at 160x90,
 reference.spp=512 (cached on disk), material.specular=0.
 
 Usage: /usr/bin/python3 scripts/measure_sponza_sun.py [--bin build/voxatlas] [--sponza PATH]
-       [--picture docs/images/sponza_sun_voxel_size.png]
+       [--picture docs/images/sponza_sun_voxel_size.png] [--light-read]
 Prints a markdown table (energy and relative RMSE of every configuration at every
 elevation) and writes the picture: one row per sun, left to right the path tracer, the
 default plan, 64^3 and 128^3, each row at the exposure that shows the path tracer's mean at
-0.2.
+0.2. With --light-read the configurations are the default, anisotropic voxels and anisotropic
+voxels read as the surface met faces (voxel.light_read=surface), all three pictured
+(docs/images/sponza_sun_light_read.png).
 """
 import os
 import sys
@@ -31,6 +33,13 @@ CONFIGS = [("default plan", {}),
            ("voxel.resolution=64", {"voxel.resolution": 64}),
            ("voxel.resolution=128", {"voxel.resolution": 128})]
 PICTURED = [0, 2, 3]
+# --light-read: the anisotropic voxels' two light reads (voxel.light_read) beside the default.
+LIGHT_READ_CONFIGS = [("default (isotropic voxels)", {}),
+                      ("voxel.anisotropic=1 (light read as the cone sees the faces)",
+                       {"voxel.anisotropic": 1}),
+                      ("voxel.anisotropic=1 voxel.light_read=surface",
+                       {"voxel.anisotropic": 1, "voxel.light_read": "surface"})]
+LIGHT_READ_PICTURE = "sponza_sun_light_read.png"
 
 
 def indirect(sponza, mode, sun, settings):
@@ -39,27 +48,34 @@ def indirect(sponza, mode, sun, settings):
 
 
 def main():
-    args = common.sponza_picture_arguments(__doc__, "sponza_sun_voxel_size.png")
+    args = common.sponza_picture_arguments(__doc__, "sponza_sun_voxel_size.png", [
+        ("--light-read", "compare the light reads of anisotropic voxels (voxel.light_read) "
+         f"instead of the voxel sizes; the picture defaults to docs/images/{LIGHT_READ_PICTURE}")])
+    configs, pictured = CONFIGS, PICTURED
+    if args.light_read:
+        configs, pictured = LIGHT_READ_CONFIGS, [0, 1, 2]
+        if os.path.basename(args.picture) == "sponza_sun_voxel_size.png":
+            args.picture = os.path.join(os.path.dirname(args.picture), LIGHT_READ_PICTURE)
     import numpy
     header = "| configuration | " + " | ".join(f"sun {d} ({why})" for d, why in SUNS) + " |"
-    rows = {name: [] for name, _ in CONFIGS}
+    rows = {name: [] for name, _ in configs}
     strips = []
     for sun, _ in SUNS:
         ref = indirect(args.sponza, "reference", sun, {"reference.spp": 512})
         mask = common.reference_mask(ref)
         exposure = 0.2 / max(float(ref[mask].mean()), 1e-12)
         strip = [ref]
-        for i, (name, settings) in enumerate(CONFIGS):
+        for i, (name, settings) in enumerate(configs):
             image = indirect(args.sponza, "voxel", sun, settings)
             rmse, energy = common.errors(image, ref, mask)
             rows[name].append(f"{energy:.3f} / {rmse:.3f}")
-            if i in PICTURED:
+            if i in pictured:
                 strip.append(image)
         strips.append(numpy.concatenate([im * exposure for im in strip], axis=1))
     print("energy / relative RMSE of the indirect term against the path tracer\n")
     print(header)
     print("|---" * (len(SUNS) + 1) + "|")
-    for name, _ in CONFIGS:
+    for name, _ in configs:
         print(f"| {name} | " + " | ".join(rows[name]) + " |")
     rgb = numpy.concatenate(strips, axis=0) ** (1.0 / 2.2)
     common.write_png(args.picture, rgb, scale=2)

@@ -162,6 +162,13 @@
 #define VOXEL_FACE_NEG_Z            5
 #define VOXEL_FACES                 6
 
+// VoxelUniforms.grid.z: isotropic voxels, or anisotropic ones whose light a cone reads where it
+// meets a surface as its own direction sees their faces (voxel.light_read=cone) or as the
+// faces of the surface met (voxel.light_read=surface).
+#define VOXEL_KIND_ISOTROPIC        0
+#define VOXEL_KIND_ANISOTROPIC      1
+#define VOXEL_KIND_ANISOTROPIC_SURFACE_READ 2
+
 #define VOXEL_MAX_LEVELS            8
 #define VOXEL_VISIBILITY_MAX_STEPS  512 // voxels one segment of voxel_visibility.glsl walks at most
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
@@ -400,9 +407,10 @@ struct GpuMaterial {                    // std430
 struct VoxelUniforms {                  // std140
     vec4 levelOrigin[VOXEL_MAX_LEVELS]; // xyz = world-space min corner of level k (m),
                                         // w = voxel edge length of level k (m)
-    ivec4 grid;                         // x = resolution v, y = level count l, z = 1 for
-                                        // anisotropic voxels (voxel.anisotropic), w = the
-                                        // widest pyramid mip cone tracing reads (-1 = all)
+    ivec4 grid;                         // x = resolution v, y = level count l, z = the
+                                        // voxels' kind (VOXEL_KIND_*: voxel.anisotropic and
+                                        // voxel.light_read), w = the widest pyramid mip cone
+                                        // tracing reads (-1 = all)
     vec4 trace;                         // x = cone half-angle tan, y = max distance (m),
                                         // z = step factor (x cone diameter), w = 1 to apply
                                         // the thesis' 1/(1+d^2) falloff

@@ -156,6 +156,15 @@ vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
     return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, dir), blend) : lower;
 }
 
+// The direction whose faces the light read takes where a cone along dir meets a surface
+// facing `front`: the cone's own (Crassin et al. 2011), or with voxel.light_read=surface the
+// surface's, so the wide read averages the surfaces facing as the one met does and leaves out
+// the other sides of what its texels hold (a pier's shaded flank beside a sunlit floor). A
+// select, not a branch: llvmpipe would run both sides.
+vec3 lightReadDirection(vec3 dir, vec3 front) {
+    return voxel.grid.z == VOXEL_KIND_ANISOTROPIC_SURFACE_READ ? -front : dir;
+}
+
 // Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
 // around p on the coarsest level: the filtered voxels while the cone is narrower than they
 // are, then the pyramid mip whose texels are voxel.footprint diameters wide (blended with the
@@ -166,21 +175,22 @@ vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
 // shaded back of a pier, the dark outside of a lit room (accuracy-analysis.md).
 vec3 coarsestLight(vec3 p, float diameter, vec3 dir, vec3 front) {
     int coarsest = voxelLevels() - 1;
+    vec3 seen = lightReadDirection(dir, front);
     float spread = log2(diameter / levelVoxelSize(coarsest));
     vec4 wide = vec4(0.0);
     if (spread > 0.0) {
         float mip = max(spread + voxel.smoothing.z - 1.0, 0.0);
         if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
         vec3 read = p + front * (0.5 * exp2(mip + 1.0) * levelVoxelSize(coarsest));
-        wide = pyramidAt((read - levelOrigin(coarsest)) / levelExtent(coarsest), mip, dir);
+        wide = pyramidAt((read - levelOrigin(coarsest)) / levelExtent(coarsest), mip, seen);
         if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
     }
     if (anisotropicVoxels()) {
         // Centred half a voxel back along the cone, the filtered read blends the voxel met
         // with the one in front of it, not with the one behind: behind a wall, that one
         // shows the other room's light.
-        vec4 seen = readDirectional(p, coarsest, dir);
-        vec3 light = seen.rgb / max(seen.a, 1e-4);
+        vec4 faces = readDirectional(p, coarsest, seen);
+        vec3 light = faces.rgb / max(faces.a, 1e-4);
         return wide.a > 0.0 ? mix(light, wide.rgb / wide.a, spread) : light;
     }
     vec3 tc = voxelTexcoord(p, coarsest);

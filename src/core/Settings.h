@@ -30,6 +30,12 @@ struct LineSpaceSettings {
     bool operator==(const LineSpaceSettings&) const = default;
 };
 
+// voxel.light_read: where a cone meets a surface, the light of anisotropic voxels is read as
+// the cone's direction sees their faces (cone, Crassin et al. 2011) or as the faces of the
+// surface met (surface): the wide read then averages only surfaces facing the way it faces,
+// not the shaded sides of whatever else its texels hold (accuracy-analysis.md).
+enum LightRead : int { LIGHT_READ_CONE = 0, LIGHT_READ_SURFACE = 1 };
+
 // Voxel cone tracing (SEEDS.md section 1); defaults are the thesis' reference settings.
 struct VoxelSettings {
     int resolution = 32;          // voxel.resolution: v, voxels per axis of every cascade level
@@ -60,6 +66,8 @@ struct VoxelSettings {
                                   // voxel for one plane (0: only level 0, voxel_plane.glsl)
     bool anisotropic = false;     // voxel.anisotropic: each voxel as seen from its 6 faces,
                                   // coarser levels composited front to back per face
+    int lightRead = LIGHT_READ_CONE; // voxel.light_read: which faces of anisotropic voxels a
+                                  // cone's light read takes where it meets a surface
     int pyramidMips = -1;         // voxel.pyramid_mips: widest pyramid mip cone tracing reads
                                   // (-1 = all; wide texels average across walls)
     bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds

@@ -349,5 +349,15 @@ TEST(RenderCommand, VplBouncesRefusesOtherCounts) {
     }
 }
 
+// The surface's light read picks faces of anisotropic voxels: with isotropic ones it has
+// nothing to pick from, and the refusal says which setting is missing.
+TEST(RenderCommand, SurfaceLightReadRefusesIsotropicVoxels) {
+    const std::string dir = makeTempDir("render-light-read");
+    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode",
+                               "voxel", "--width", "32", "--height", "32", "--set",
+                               "voxel.light_read=surface"}),
+            "voxel.anisotropic=1", {dir + "/a.png"});
+}
+
 } // namespace
 } // namespace gi::test

@@ -33,16 +33,26 @@ core::Image voxelIndirect(const scene::Scene& scene, const Settings& settings, i
     return renderer.readback();
 }
 
-reference::ImageErrors voxelAgainstReference(const scene::Scene& scene, const Settings& settings) {
+// The path tracer's indirect component from the scene's camera 0 (64 spp, one bounce).
+reference::ReferenceResult referenceIndirect(const scene::Scene& scene) {
     const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
-    const core::Image voxel = voxelIndirect(scene, settings, 0);
     ReferenceSettings referenceSettings;
     referenceSettings.spp = 64;
     referenceSettings.bounces = 1;
-    const reference::ReferenceResult truth =
+    reference::ReferenceResult truth =
             reference::renderReference(scene, camera, kSize, kSize, referenceSettings);
     EXPECT_FALSE(truth.indirect.empty());
+    return truth;
+}
+
+reference::ImageErrors voxelAgainst(const reference::ReferenceResult& truth,
+        const scene::Scene& scene, const Settings& settings) {
+    const core::Image voxel = voxelIndirect(scene, settings, 0);
     return reference::measureImageError(voxel, truth.indirect, truth.coverage);
+}
+
+reference::ImageErrors voxelAgainstReference(const scene::Scene& scene, const Settings& settings) {
+    return voxelAgainst(referenceIndirect(scene), scene, settings);
 }
 
 // Mean indirect light (all pixels) of a voxel-GI frame from the scene's camera `index`.
@@ -77,6 +87,27 @@ TEST_F(VoxelSuiteGpuTest, AnisotropicVoxelsKeepTheWallBetweenTwoRooms) {
         ASSERT_GT(lit, 0.0);
         if (anisotropic) EXPECT_LT(dark / lit, 0.04);
     }
+}
+
+// voxel.light_read=surface: where a cone meets a surface, the anisotropic voxels' light is
+// read as the surface met faces, so the wide read leaves out the sides of its texels' other
+// surfaces that face the cone but not the light (in the lit room, the wall's and the
+// partition's unlit flanks beside the lit floor). The lit room against the path tracer, 96x96:
+// relative RMSE 0.115 with the cone's faces, 0.093 with the surface's (energy 0.918 -> 0.953).
+TEST_F(VoxelSuiteGpuTest, SurfaceLightReadBringsTheLitRoomCloserToThePathTracer) {
+    const scene::Scene scene = loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
+    const reference::ReferenceResult truth = referenceIndirect(scene);
+    Settings settings;
+    settings.specular = 0.0f;
+    settings.voxel.anisotropic = true;
+    settings.voxel.lightRead = LIGHT_READ_CONE;
+    const reference::ImageErrors cone = voxelAgainst(truth, scene, settings);
+    settings.voxel.lightRead = LIGHT_READ_SURFACE;
+    const reference::ImageErrors surface = voxelAgainst(truth, scene, settings);
+    std::printf("two rooms, lit room: cone's faces %.3f / %.3f, surface's faces %.3f / %.3f\n",
+            cone.relativeRmse, cone.energyRatio, surface.relativeRmse, surface.energyRatio);
+    EXPECT_LT(surface.relativeRmse, cone.relativeRmse - 0.01);
+    EXPECT_GT(surface.energyRatio, cone.energyRatio);
 }
 
 // The adaptive plan holds the two rooms in one scene-centred level of 64^3

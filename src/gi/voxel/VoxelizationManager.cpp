@@ -49,6 +49,11 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 std::to_string(max3D);
         return false;
     }
+    if (s.lightRead == LIGHT_READ_SURFACE && !s.anisotropic) {
+        error = "voxel.light_read=surface needs anisotropic voxels (voxel.anisotropic=1): an "
+                "isotropic voxel holds one light for every direction";
+        return false;
+    }
     GLint maxViewport[2] = {0, 0};
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
     if (s.resolution * s.multiplier > std::min(maxViewport[0], maxViewport[1])) {
@@ -104,8 +109,10 @@ void VoxelizationManager::writeUniforms() {
         const int l = std::min(level, mVolume.levels() - 1);
         u.levelOrigin[level] = glm::vec4(mVolume.origin(l), mVolume.voxelSize(l));
     }
-    u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), mSettings.anisotropic ? 1 : 0,
-            mSettings.pyramidMips);
+    const int kind = !mSettings.anisotropic              ? VOXEL_KIND_ISOTROPIC
+                     : mSettings.lightRead == LIGHT_READ_SURFACE ? VOXEL_KIND_ANISOTROPIC_SURFACE_READ
+                                                                 : VOXEL_KIND_ANISOTROPIC;
+    u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), kind, mSettings.pyramidMips);
     const float halfAngle = glm::radians(mSettings.coneAngle) * 0.5f;
     const float maxDistance = mSettings.maxDistance > 0.0f
             ? mSettings.maxDistance
