@@ -87,6 +87,11 @@ std::optional<OccupancyVolume> FrameRenderer::updateOccupancy(const scene::Camer
     occupancySettings.voxel.sceneCentred = true;
     occupancySettings.voxel.coverageMaxAxis = true;
     occupancySettings.voxel.projectedAreas = true;
+    // The marches read occupied voxels and their coverage, never a face's light, and trace no
+    // cones: the occupancy keeps no directional copy (voxel.anisotropic) and leaves the cones'
+    // light read (voxel.light_read, which asks for that copy) to voxel GI.
+    occupancySettings.voxel.anisotropic = false;
+    occupancySettings.voxel.lightRead = LIGHT_READ_CONE;
     // The occupancy holds the whole scene in its finest level, whatever the plan's placement.
     if (mSettings.plan == PLAN_ADAPTIVE) occupancySettings.voxel.extent = 0.0f;
     // Its resolution is voxel.occupancy_resolution, else the requested voxel.resolution: the

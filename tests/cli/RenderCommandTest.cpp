@@ -349,14 +349,34 @@ TEST(RenderCommand, VplBouncesRefusesOtherCounts) {
     }
 }
 
-// The surface's light read picks faces of anisotropic voxels: with isotropic ones it has
-// nothing to pick from, and the refusal says which setting is missing.
-TEST(RenderCommand, SurfaceLightReadRefusesIsotropicVoxels) {
+// The surface's light read picks faces of anisotropic voxels: with isotropic ones voxel GI has
+// nothing to pick from, and the refusal says which setting is missing. The VPLs' voxel
+// occupancy traces no cones and takes the setting as it is.
+TEST(RenderCommand, SurfaceLightReadRefusesIsotropicVoxelsInVoxelGiOnly) {
     const std::string dir = makeTempDir("render-light-read");
     expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode",
                                "voxel", "--width", "32", "--height", "32", "--set",
                                "voxel.light_read=surface"}),
             "voxel.anisotropic=1", {dir + "/a.png"});
+    const ProcessResult vpl = runVoxatlas({"render", kCornell, "--out", dir + "/b.png", "--mode",
+            "vpl", "--width", "32", "--height", "32", "--set", "voxel.light_read=surface"});
+    EXPECT_EQ(vpl.exitCode, 0) << vpl.err;
+    EXPECT_EQ(vpl.err.find("voxel occupancy"), std::string::npos) << vpl.err;
+    EXPECT_TRUE(fs::exists(dir + "/b.png"));
+}
+
+// The VPLs' visibility marches read only which voxels are occupied: with voxel.anisotropic=1 the
+// occupancy still holds no directional copy (1.5 MiB for the Cornell box's 32^3 voxels).
+TEST(RenderCommand, VplOccupancyKeepsNoDirectionalVoxels) {
+    const std::string dir = makeTempDir("render-vpl-anisotropic");
+    const ProcessResult r = runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode",
+            "vpl", "--width", "32", "--height", "32", "--set", "voxel.anisotropic=1", "--timings",
+            dir + "/t.json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream file(dir + "/t.json");
+    const nlohmann::json timings = nlohmann::json::parse(file);
+    ASSERT_TRUE(timings["memory_bytes"].contains("occupancy/voxel/normal"));
+    EXPECT_FALSE(timings["memory_bytes"].contains("occupancy/voxel/directional"));
 }
 
 } // namespace
