@@ -425,9 +425,9 @@ struct VoxelUniforms {                  // std140
                                         // propagation, w = 1 when cone tracing takes a
                                         // coarser level's unit normal for one plane
     vec4 smoothing;                     // x = filter radius in trace texels (0 = off),
-                                        // y = the period of the cone ring's per-pixel
-                                        // turn in trace pixels, 4 or 2 (RingDither.h;
-                                        // 0 = no jitter), z = log2
+                                        // y = the cone ring's per-pixel turn: 8 x turns
+                                        // per axis (2 or 4) + pixels per cell and axis
+                                        // (RingDither.h), 0 = no jitter, z = log2
                                         // of the texel width of the light pyramid mip a cone
                                         // reads, in cone diameters (voxel.footprint),
                                         // w = finest voxels between a surface and its

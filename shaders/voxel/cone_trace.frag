@@ -53,17 +53,19 @@ void main() {
     // voxel.cone_offset finest voxels out (a length, whatever level holds the surface).
     vec3 origin = vin.position +
             n * max(levelVoxelSize(level), voxel.smoothing.w * levelVoxelSize(0));
-    // With voxel.jitter the ring turns by an ordered-dither fraction of its 45-degree spacing,
-    // so neighbouring pixels sample 16 different ring directions (a 4x4 period), or 4 (2x2)
-    // where the filter's window is 3x3 (RingDither.h); the filter pass averages them back into
-    // a smooth result. The 2x2 corner of the 4x4 Bayer matrix holds turns 0, 4, 8 and 12 of 16,
-    // evenly spaced.
+    // With voxel.jitter the ring turns by an ordered-dither fraction of its 45-degree spacing:
+    // 4x4 or 2x2 turns over cells of one or 2x2 pixels, as RingDither.h derives them from the
+    // filter's window (smoothing.y = 8 x turns + cell); the filter pass averages them back into
+    // a smooth result. The 2x2 corner of the 4x4 Bayer matrix holds turns 0, 4, 8 and 12 of
+    // 16, evenly spaced.
     float ringTurn = 0.0;
     if (voxel.smoothing.y != 0.0) {
         const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
                                           3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
-        int period = int(voxel.smoothing.y);
-        ivec2 cell = (ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz) & (period - 1);
+        int code = int(voxel.smoothing.y);
+        int turns = code / 8, cellPixels = code % 8;
+        ivec2 pixel = ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz;
+        ivec2 cell = (pixel / cellPixels) & (turns - 1);
         ringTurn = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 * (PI / 4.0);
     }
     vec3 irradiance = coneIrradiance(origin, n, ringTurn, voxel.trace.y);

@@ -1,8 +1,9 @@
 // Edge-aware smoothing of the traced indirect irradiance (the thesis' future work: "filtering
 // and smart interpolation of the indirect result"): each texel becomes the mean of its
 // (2r+1)^2 neighbourhood, every neighbour weighted by how close its view depth is to the
-// centre's, so light does not cross depth edges. With the per-pixel cone jitter, the
-// neighbourhood holds 16 different cone rings: the mean behaves like many more cones.
+// centre's, so light does not cross depth edges. With the cone ring's jitter, the
+// neighbourhood holds a whole period of its turns (gi/voxel/RingDither.h: 4 or 16 different
+// rings): the mean behaves like many more cones.
 #include "../common/voxel_cascade.glsl"
 
 layout(local_size_x = VOXEL_FILTER_LOCAL_SIZE, local_size_y = VOXEL_FILTER_LOCAL_SIZE) in;

@@ -1,18 +1,33 @@
-// The cone ring's turn per pixel (voxel.jitter, cone_trace.frag): an ordered dither over a
-// square of trace pixels, whose turns the edge-aware filter (voxel.filter) averages back into a
-// smooth result.
+// The cone ring's turn per pixel (voxel.jitter, cone_trace.frag): an ordered dither of 2x2 or
+// 4x4 turns over square cells of trace pixels, whose turns the edge-aware filter (voxel.filter)
+// averages back into a smooth result.
 #pragma once
 
 namespace gi::voxel {
 
-// The dither's period in trace pixels for a filter of radius `filterTexels` trace texels:
-// 4 (16 turns), or 2 (4 turns) where the filter's window is 3x3 (a quarter of the resolution at
-// the default radius). Such a window holds a 2x2 period whole at every pixel, and of a 4x4 one
-// only 9 turns of 16; and neighbours whose rings differ by fewer turns walk more alike, which
-// llvmpipe pays for by a group's longest walk (results-performance.md). Without the filter
-// (radius 0) the 4x4 dither stays, as voxel.jitter asks for it.
-constexpr int ringDitherPeriod(int filterTexels) {
-    return filterTexels == 1 ? 2 : 4;
+struct RingDither {
+    int turns = 4;   // turns per axis: 4 (16 turns) or 2 (4)
+    int cell = 1;    // pixels per cell and axis, all turned alike
+
+    // VoxelUniforms.smoothing.y (cone_trace.frag decodes it): 8 x turns + cell.
+    [[nodiscard]] constexpr int code() const { return 8 * turns + cell; }
+    bool operator==(const RingDither&) const = default;
+};
+
+// The dither for a filter of radius `filterTexels` trace texels, whose window is 2 r + 1 texels
+// a side: cells of 2x2 pixels (a quad, which llvmpipe shades as one) where the window holds a
+// whole period of them, else single pixels; and as many turns as the window then holds, at
+// most 4x4. So every pixel's window averages every turn, and neighbours share their turn as
+// far as that allows: the lanes llvmpipe shades together walk more alike, and a group's loop
+// runs until its longest walk ends (results-performance.md). 3x3 (a quarter of the resolution
+// at the default radius): 2x2 turns of single pixels; 5x5 (half): 2x2 turns of quads; 9x9
+// (full): 4x4 turns of quads. Without the filter (radius 0) the 4x4 dither of single pixels
+// stays, as voxel.jitter asks for it.
+constexpr RingDither ringDither(int filterTexels) {
+    if (filterTexels <= 0) return {4, 1};
+    const int window = 2 * filterTexels + 1;
+    const int cell = window >= 4 ? 2 : 1;
+    return {window >= 4 * cell ? 4 : 2, cell};
 }
 
 } // namespace gi::voxel

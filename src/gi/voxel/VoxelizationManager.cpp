@@ -131,8 +131,8 @@ void VoxelizationManager::writeUniforms() {
     const float filterTexels = mSettings.filterRadius > 0
             ? std::max(std::round(float(mSettings.filterRadius) * mSettings.traceScale / 0.5f), 1.0f)
             : 0.0f;
-    const float ditherPeriod = mSettings.jitter ? float(ringDitherPeriod(int(filterTexels))) : 0.0f;
-    u.smoothing = glm::vec4(filterTexels, ditherPeriod, std::log2(mSettings.footprint),
+    const float dither = mSettings.jitter ? float(ringDither(int(filterTexels)).code()) : 0.0f;
+    u.smoothing = glm::vec4(filterTexels, dither, std::log2(mSettings.footprint),
             mSettings.coneOffset);
     // One raster over the coarsest level, or one per level over its own extent
     // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
