@@ -91,7 +91,7 @@ struct VoxelSettings {
                                   // voxel further out
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
-    bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (4x4 dither)
+    bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (RingDither.h)
     int filterRadius = 2;         // voxel.filter: edge-aware smoothing radius, texels of a
                                   // trace at scale 0.5 (scaled with voxel.trace_scale)
     int debugLevel = 0;           // voxel.debug_level: cascade level shown by debug views
