@@ -15,11 +15,11 @@ struct RingDither {
 };
 
 // The dither for a filter of radius `filterTexels` trace texels, whose window is 2 r + 1 texels
-// a side: cells of 2x2 pixels (a quad, which llvmpipe shades as one) where the window holds a
-// whole period of them, else single pixels; and as many turns as the window then holds, at
-// most 4x4. So every pixel's window averages every turn, and neighbours share their turn as
-// far as that allows: the lanes llvmpipe shades together walk more alike, and a group's loop
-// runs until its longest walk ends (results-performance.md). 3x3 (a quarter of the resolution
+// a side: cells of 2x2 pixels (a quad) where the window holds a whole period of them, else
+// single pixels; and as many turns as the window then holds, at most 4x4. So every pixel's
+// window averages every turn, and neighbours share their turn as far as that allows: the 4x2
+// pixels llvmpipe shades together hold 2 turns instead of 8 and walk more alike, and a
+// group's loop runs until its longest walk ends (results-performance.md). 3x3 (a quarter of the resolution
 // at the default radius): 2x2 turns of single pixels; 5x5 (half): 2x2 turns of quads; 9x9
 // (full): 4x4 turns of quads. Without the filter (radius 0) the 4x4 dither of single pixels
 // stays, as voxel.jitter asks for it.
