@@ -100,11 +100,11 @@ const float kVoxelShadowApertureScale = 0.25;
 
 float voxelShadowCone(GpuLight light, vec3 position, vec3 n) {
     int type = int(light.positionAndType.w);
-    if (type == LIGHT_SKY) return 1.0;
+    if (lightsOfKind(LIGHT_SKY) && type == LIGHT_SKY) return 1.0;
     vec3 toLight;
     float distance;
     lightDirection(light, position, toLight, distance);
-    if (type == LIGHT_DIRECTIONAL) return voxelConeVisibility(position, n, toLight, 1e30, 0.0);
+    if (lightsOfKind(LIGHT_DIRECTIONAL) && type == LIGHT_DIRECTIONAL) return voxelConeVisibility(position, n, toLight, 1e30, 0.0);
     float radius = type == LIGHT_AREA ? light.spotCone.w : 0.0;
     // A quarter of the light's angular radius: the coarse voxels a wider cone reads spill
     // over the walls beside its path. On the emissive Cornell box (scripts/measure_shadows.py)
@@ -125,8 +125,10 @@ float directVisibility(int lightIndex, vec3 position, vec3 n, float distanceToLi
     int type = int(light.positionAndType.w);
     if (shadowMethod() == SHADOW_METHOD_VOXEL) return voxelShadowCone(light, position, n);
     vec3 origin = position + n * shadowRayOffset();
-    if (type == LIGHT_AREA) return areaLightRayVisibility(light, origin, n, state);
-    if (type == LIGHT_SKY) return 1.0;
+    if (lightsOfKind(LIGHT_AREA) && type == LIGHT_AREA) {
+        return areaLightRayVisibility(light, origin, n, state);
+    }
+    if (lightsOfKind(LIGHT_SKY) && type == LIGHT_SKY) return 1.0;
     vec3 toLight;
     float distance;
     lightDirection(light, origin, toLight, distance);

@@ -59,12 +59,24 @@ vec3 emitterIrradiance(GpuEmitter e, vec3 position, vec3 n) {
 }
 
 // Unit vector from the surface towards the light, and the distance (inf for directional).
+// Whether the scene has a light of `type` (LIGHT_*). llvmpipe runs every branch of a shader for
+// all pixels of a group whenever one of them takes it, so the code of each kind of light ran
+// for every light: a program built with FRAME_LIGHT_KINDS (render/FrameSwitches.h) drops the
+// kinds the scene has none of. Without it every kind may be present.
+bool lightsOfKind(int type) {
+#ifdef FRAME_LIGHT_KINDS
+    return (FRAME_LIGHT_KINDS & (1 << type)) != 0;
+#else
+    return true;
+#endif
+}
+
 void lightDirection(GpuLight light, vec3 position, out vec3 toLight, out float distance) {
     int type = int(light.positionAndType.w);
-    if (type == LIGHT_SKY) {
+    if (lightsOfKind(LIGHT_SKY) && type == LIGHT_SKY) {
         toLight = vec3(0.0, 1.0, 0.0);
         distance = 1.0 / 0.0;
-    } else if (type == LIGHT_DIRECTIONAL) {
+    } else if (lightsOfKind(LIGHT_DIRECTIONAL) && type == LIGHT_DIRECTIONAL) {
         toLight = -light.directionAndRange.xyz;
         distance = 1.0 / 0.0;
     } else {
@@ -81,9 +93,11 @@ vec3 lightIrradiance(GpuLight light, vec3 position, vec3 n) {
     lightDirection(light, position, toLight, distance);
     float cosTheta = max(dot(n, toLight), 0.0);
     int type = int(light.positionAndType.w);
-    if (type == LIGHT_DIRECTIONAL) return light.radiantIntensity.rgb * cosTheta;
-    if (type == LIGHT_SKY) return vec3(0.0);
-    if (type == LIGHT_AREA) {
+    if (lightsOfKind(LIGHT_DIRECTIONAL) && type == LIGHT_DIRECTIONAL) {
+        return light.radiantIntensity.rgb * cosTheta;
+    }
+    if (lightsOfKind(LIGHT_SKY) && type == LIGHT_SKY) return vec3(0.0);
+    if (lightsOfKind(LIGHT_AREA) && type == LIGHT_AREA) {
         vec3 e = vec3(0.0);
         int first = int(light.spotCone.x), count = int(light.spotCone.y);
         for (int i = first; i < first + count; ++i) e += emitterIrradiance(emitters[i], position, n);
@@ -94,7 +108,7 @@ vec3 lightIrradiance(GpuLight light, vec3 position, vec3 n) {
     // (spotCone.z = (1e-4 x its diagonal)^2, GpuScene.cpp), so scaled scenes light alike.
     float invSquare = 1.0 / max(distance * distance, light.spotCone.z);
     vec3 e = light.radiantIntensity.rgb * cosTheta * invSquare;
-    if (type == LIGHT_SPOT) {
+    if (lightsOfKind(LIGHT_SPOT) && type == LIGHT_SPOT) {
         float cosAlpha = dot(-toLight, light.directionAndRange.xyz);
         float cosInner = light.spotCone.x, cosOuter = light.spotCone.y;
         float s = clamp((cosAlpha - cosOuter) / max(cosInner - cosOuter, 1e-4), 0.0, 1.0);

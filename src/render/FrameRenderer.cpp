@@ -287,6 +287,7 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     FrameSwitches switches = FrameSwitches::of(mSettings);
     switches.shadowMaps = mShadows.mapKinds();
     switches.materialTextures = mScene->textureKinds();
+    switches.lightKinds = mScene->lightKinds();
     mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
                              mSettings.depthPrepass, gi.indirectSpecular, switches},
             {mTarget}, profiler);

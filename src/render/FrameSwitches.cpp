@@ -19,7 +19,8 @@ std::vector<std::string> FrameSwitches::defines() const {
             "FRAME_SHADOW_METHOD " + std::to_string(shadowMethod),
             std::string("FRAME_SHADOWS ") + (shadows ? "1" : "0"),
             "FRAME_SHADOW_MAPS " + std::to_string(shadowMaps),
-            "FRAME_MATERIAL_TEXTURES " + std::to_string(materialTextures)};
+            "FRAME_MATERIAL_TEXTURES " + std::to_string(materialTextures),
+            "FRAME_LIGHT_KINDS " + std::to_string(lightKinds)};
 }
 
 } // namespace gi::render

@@ -1,8 +1,8 @@
 // The frame's switches as the shaders read them (shaders/common/frame.glsl: shadingModel(),
 // shadowMethod(), shadowsApplied(), shadowMapsOfKind(); material.glsl:
-// materialTexturesOfKind()): written into the frame uniforms every frame (the kinds of shadow
-// map and material texture excepted), and given as #defines to the passes that compile a
-// program per setting of them (gl/ProgramVariants.h).
+// materialTexturesOfKind(); lighting.glsl: lightsOfKind()): written into the frame uniforms
+// every frame (the kinds of shadow map, material texture and light excepted), and given as
+// #defines to the passes that compile a program per setting of them (gl/ProgramVariants.h).
 #pragma once
 
 #include "core/Settings.h"
@@ -22,10 +22,13 @@ struct FrameSwitches {
     // MATERIAL_TEXTURES_* bits: the kinds of texture some material has
     // (GpuScene::textureKinds); the lookups of a kind no material has are compiled out.
     int materialTextures = ~0;
+    // Bit (1 << LIGHT_*) for every kind of light the scene has (GpuScene::lightKinds); the
+    // code of the other kinds is compiled out.
+    int lightKinds = ~0;
 
     [[nodiscard]] static FrameSwitches of(const Settings& settings);
     // FRAME_SHADING_MODEL, FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS,
-    // FRAME_MATERIAL_TEXTURES.
+    // FRAME_MATERIAL_TEXTURES, FRAME_LIGHT_KINDS.
     [[nodiscard]] std::vector<std::string> defines() const;
 };
 

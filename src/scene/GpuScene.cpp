@@ -193,6 +193,7 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
     const float minDistanceSquared = std::max(minDistance * minDistance, 1e-36f);
     std::vector<shader::GpuLight> table;
     std::vector<shader::GpuEmitter> emitters;
+    mLightKinds = 0;
     for (const Light& light : lights) {
         shader::GpuLight g{};
         const int type = light.type == LightType::Point ? LIGHT_POINT
@@ -200,6 +201,7 @@ void GpuScene::setLights(const std::vector<Light>& lights) {
                          : light.type == LightType::Area ? LIGHT_AREA
                          : light.type == LightType::Sky ? LIGHT_SKY
                                                         : LIGHT_DIRECTIONAL;
+        mLightKinds |= 1 << type;
         g.positionAndType = glm::vec4(light.position, float(type));
         g.directionAndRange = glm::vec4(glm::normalize(light.direction), light.range);
         g.radiantIntensity = glm::vec4(light.color * light.intensity * exposure, 0.0f);

@@ -73,6 +73,8 @@ public:
     // MATERIAL_TEXTURES_* bits: the kinds of texture some material has.
     int textureKinds() const;
     int lightCount() const { return mLightCount; }
+    // Bit (1 << LIGHT_*) for every kind of light in the table.
+    int lightKinds() const { return mLightKinds; }
     const Aabb& bounds() const { return mBounds; }
 
 private:
@@ -88,6 +90,7 @@ private:
     std::vector<int> mBaseColorTexture, mEmissiveTexture;   // per material, -1 = none
     std::vector<bool> mEmitsAsLight;     // per material: its emission is an area light's
     int mLightCount = 0;
+    int mLightKinds = 0;
     Aabb mBounds;
     // The material table as authored; uploaded with its emission times mExposure.
     std::vector<shader::GpuMaterial> mMaterialTable;
