@@ -175,6 +175,7 @@
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)
 #define VOXEL_FILTER_LOCAL_SIZE     8   // the indirect filter runs 8x8 texel groups
+#define VOXEL_FILTER_MAX_RADIUS     8   // voxel.filter 4 at voxel.trace_scale 1, in texels
 #define TEMPORAL_LOCAL_SIZE         8   // the temporal filter runs 8x8 texel groups
 #define TRACE_REUSE_LOCAL_SIZE      8   // trace reuse runs 8x8 texel groups
 

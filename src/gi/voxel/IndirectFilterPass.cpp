@@ -3,12 +3,14 @@
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
+#include <algorithm>
+#include <string>
+
 namespace gi::voxel {
 
 bool IndirectFilterPass::init(gl::ShaderLibrary& shaders, std::string& error) {
-    mProgram = shaders.build({"voxel/indirect_filter",
+    return mPrograms.init(shaders, {"voxel/indirect_filter",
             {{GL_COMPUTE_SHADER, "voxel/indirect_filter.comp"}}, {}}, error);
-    return bool(mProgram);
 }
 
 void IndirectFilterPass::execute(const Inputs& in, const Outputs& out,
@@ -19,7 +21,8 @@ void IndirectFilterPass::execute(const Inputs& in, const Outputs& out,
         mResult = gl::createTargetTexture({GL_RGBA16F, "voxel/indirect_filtered", true}, size);
     }
     gl::GpuScope scope(profiler, "voxel/filter");
-    glUseProgram(mProgram.id());
+    const int radius = std::clamp(in.radius, 1, VOXEL_FILTER_MAX_RADIUS);
+    glUseProgram(mPrograms.id({"FILTER_RADIUS " + std::to_string(radius)}));
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.voxelUniforms.id());
     glBindTextureUnit(BIND_TEX_FILTER_SOURCE, in.source.id());
     glBindImageTexture(BIND_IMG_FILTER_TARGET, mResult.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);

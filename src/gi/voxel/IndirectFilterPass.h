@@ -8,6 +8,7 @@
 
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
+#include "gl/ProgramVariants.h"
 #include "gl/ShaderLibrary.h"
 
 #include <glm/glm.hpp>
@@ -19,6 +20,7 @@ public:
     struct Inputs {
         const gl::Texture& source;         // RGBA16F, rgb = E_ind (W/m^2), a = view depth (m)
         const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: smoothing.x = radius
+        int radius = 1;                    // texels, 1..VOXEL_FILTER_MAX_RADIUS (= smoothing.x)
     };
     struct Outputs {
         glm::ivec2 size;                   // pixels of source and of result()
@@ -29,7 +31,7 @@ public:
     const gl::Texture& result() const { return mResult; }
 
 private:
-    gl::ProgramRef mProgram;
+    gl::ProgramVariants mPrograms;   // per radius (FILTER_RADIUS)
     gl::Texture mResult;
     glm::ivec2 mSize{0};
 };

@@ -14,6 +14,15 @@ namespace {
 
 bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
+// The filter's radius in trace texels (0: no filter). voxel.filter is in texels of the
+// half-resolution trace; other trace scales scale it, so the filter smooths the same part of
+// the image and a finer trace only adds detail.
+int filterTexels(const VoxelSettings& settings) {
+    if (settings.filterRadius <= 0) return 0;
+    const float texels = std::round(float(settings.filterRadius) * settings.traceScale / 0.5f);
+    return std::clamp(int(texels), 1, VOXEL_FILTER_MAX_RADIUS);
+}
+
 } // namespace
 
 bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& scene,
@@ -126,13 +135,9 @@ void VoxelizationManager::writeUniforms() {
     const float boundary = 0.5f * ringAngle;
     const float central = std::sin(boundary) * std::sin(boundary);
     u.traceWeights = glm::vec4(central, (1.0f - central) / 8.0f, std::cos(ringAngle), std::sin(ringAngle));
-    // voxel.filter is in texels of the half-resolution trace; other trace scales scale it, so
-    // the filter smooths the same part of the image and a finer trace only adds detail.
-    const float filterTexels = mSettings.filterRadius > 0
-            ? std::max(std::round(float(mSettings.filterRadius) * mSettings.traceScale / 0.5f), 1.0f)
-            : 0.0f;
-    const float dither = mSettings.jitter ? float(ringDither(int(filterTexels)).code()) : 0.0f;
-    u.smoothing = glm::vec4(filterTexels, dither, std::log2(mSettings.footprint),
+    const int filterRadius = filterTexels(mSettings);
+    const float dither = mSettings.jitter ? float(ringDither(filterRadius).code()) : 0.0f;
+    u.smoothing = glm::vec4(float(filterRadius), dither, std::log2(mSettings.footprint),
             mSettings.coneOffset);
     // One raster over the coarsest level, or one per level over its own extent
     // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
@@ -288,7 +293,9 @@ void VoxelizationManager::trace(const GiFrameInputs& in, gl::GpuProfiler& profil
         mQuarterTraced = false;
     }
     const gl::Texture& traced = mSettings.traceReuse ? mReuse.result() : mTrace.indirect();
-    if (mSettings.filterRadius > 0) mFilter.execute({traced, mUniforms}, {traceSize}, profiler);
+    if (mSettings.filterRadius > 0) {
+        mFilter.execute({traced, mUniforms, filterTexels(mSettings)}, {traceSize}, profiler);
+    }
 
     mShowDebug = in.debugView != DebugView::None;
     if (mShowDebug) {
