@@ -148,7 +148,7 @@ int runRender(const Config& config) {
     if (!selectCamera(config, scene, float(width) / float(height), camera, error)) return fail(2, error);
     if (config.mode == render::GiMode::Reference) return runReference(config, scene, camera, width, height);
     if (!render::FrameRenderer::shadowMapsFit(scene.lights, config.settings.shadow, error) ||
-            !render::lineSpaceFits(scene, scene.lights, config.settings, error)) {
+            !render::lineSpaceFits(scene, config.settings, error)) {
         return fail(2, error);
     }
 

@@ -5,16 +5,12 @@
 
 namespace gi::render {
 
-bool BvhShadows::update(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-        std::uint64_t geometryVersion, gl::GpuProfiler& profiler, std::string& error) {
-    std::vector<scene::EmitterTriangle> emitters;
-    for (const scene::Light& light : lights) {
-        emitters.insert(emitters.end(), light.emitters.begin(), light.emitters.end());
-    }
-    if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters) return true;
+bool BvhShadows::update(const scene::Scene& scene, std::uint64_t geometryVersion,
+        gl::GpuProfiler& profiler, std::string& error) {
+    if (mBuilt && geometryVersion == mGeometryVersion) return true;
     const gl::GpuScope scope(profiler, "render/bvh/build");
     reference::GpuBvh bvh;
-    const bool ok = reference::buildGpuBvh(shadowCasterCorners(scene, lights), bvh, error);
+    const bool ok = reference::buildGpuBvh(shadowCasterCorners(scene), bvh, error);
     if (!ok) return false;
     mBvh = std::move(bvh);
     mNodes = gl::createBuffer(mBvh.nodes.size() * sizeof(glm::vec4), mBvh.nodes.data(), 0, "render/bvh/nodes");
@@ -22,7 +18,6 @@ bool BvhShadows::update(const scene::Scene& scene, const std::vector<scene::Ligh
             mBvh.triangles.empty() ? nullptr : mBvh.triangles.data(), 0, "render/bvh/triangles");
     mBuilt = true;
     mGeometryVersion = geometryVersion;
-    mEmitters = std::move(emitters);
     return true;
 }
 

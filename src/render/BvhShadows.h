@@ -16,11 +16,11 @@ namespace gi::render {
 
 class BvhShadows {
 public:
-    // Rebuilds when `geometryVersion` or the lights' emitters differ from the last build.
+    // Rebuilds when `geometryVersion` differs from the last build.
     // False with `error` when the build fails (the previous buffers stay).
     // A build is timed as the pass render/bvh/build.
-    bool update(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-            std::uint64_t geometryVersion, gl::GpuProfiler& profiler, std::string& error);
+    bool update(const scene::Scene& scene, std::uint64_t geometryVersion,
+            gl::GpuProfiler& profiler, std::string& error);
     // Binds the node and triangle buffers (empty ones before the first build).
     void bind();
     const reference::GpuBvh& bvh() const { return mBvh; }
@@ -30,7 +30,6 @@ private:
     gl::Buffer mNodes, mTriangles;
     bool mBuilt = false;
     std::uint64_t mGeometryVersion = 0;
-    std::vector<scene::EmitterTriangle> mEmitters;   // the lights' triangles it was built without
 };
 
 } // namespace gi::render

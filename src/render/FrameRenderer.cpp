@@ -41,7 +41,7 @@ bool FrameRenderer::init(const scene::Scene& scene, const Settings& settings,
     mSettings = applyPlan(settings, mPlan);
     mLights = plannedLights(mAllLights, mPlan);
     if (!shadowMapsFit(mLights, mSettings.shadow, error) ||
-            !lineSpaceFits(scene, mLights, mSettings, error)) {
+            !lineSpaceFits(scene, mSettings, error)) {
         return false;
     }
     mScene = std::make_unique<scene::GpuScene>(scene);
@@ -65,7 +65,7 @@ bool FrameRenderer::setSettings(const Settings& requested, std::string& error) {
     const bool shadowsChanged = !(settings.shadow == mSettings.shadow) || lightsChanged;
     const bool lineSpaceChanged = shadowsChanged || !(settings.lineSpace == mSettings.lineSpace);
     if ((shadowsChanged && !shadowMapsFit(lights, settings.shadow, error)) ||
-            (lineSpaceChanged && !lineSpaceFits(*mSceneDescription, lights, settings, error))) {
+            (lineSpaceChanged && !lineSpaceFits(*mSceneDescription, settings, error))) {
         return false;
     }
     if (mGi && !mGi->configure(settings, error)) return false;
@@ -181,11 +181,11 @@ void FrameRenderer::updateShadowRays(gl::GpuProfiler& profiler) {
     const scene::Scene& scene = *mPosedScene;
     std::string error;
     if (mSettings.shadow.method == SHADOW_METHOD_BVH &&
-            !mBvhShadows.update(scene, mLights, mScene->geometryVersion(), profiler, error)) {
+            !mBvhShadows.update(scene, mScene->geometryVersion(), profiler, error)) {
         std::fprintf(stderr, "shadow.method=bvh: %s\n", error.c_str());
     }
     if (mSettings.shadow.method == SHADOW_METHOD_LINESPACE &&
-            !mLineSpace.update(*mShaders, scene, mLights, mScene->geometryVersion(), mSettings.lineSpace,
+            !mLineSpace.update(*mShaders, scene, mScene->geometryVersion(), mSettings.lineSpace,
                     profiler, error)) {
         std::fprintf(stderr, "shadow.method=linespace: %s\n", error.c_str());
     }
@@ -197,7 +197,7 @@ int FrameRenderer::updateGiBvh(gl::GpuProfiler& profiler) {
             (mMode == GiMode::Vpl && mSettings.vpl.visibility == VPL_VISIBILITY_BVH);
     if (!wanted) return 0;
     std::string error;
-    if (!mBvhShadows.update(*mPosedScene, mLights, mScene->geometryVersion(), profiler, error)) {
+    if (!mBvhShadows.update(*mPosedScene, mScene->geometryVersion(), profiler, error)) {
         std::fprintf(stderr, "%s=bvh: %s\n",
                 mMode == GiMode::Atlas ? "atlas.visibility" : "vpl.visibility", error.c_str());
         return 0;

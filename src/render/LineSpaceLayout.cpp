@@ -88,12 +88,11 @@ double lineSpaceBytesBound(const LineSpaceLayout& layout, const std::vector<glm:
     return occupancy + triangles + nodes * perNode;
 }
 
-bool lineSpaceFits(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-        const Settings& settings, std::string& error) {
+bool lineSpaceFits(const scene::Scene& scene, const Settings& settings, std::string& error) {
     if (settings.shadow.method != SHADOW_METHOD_LINESPACE || !settings.shadow.enabled) return true;
     const int n = settings.lineSpace.n, depth = settings.lineSpace.depth;
     const LineSpaceLayout layout = lineSpaceLayout(scene.bounds, n, depth);
-    const double bytes = lineSpaceBytesBound(layout, shadowCasterCorners(scene, lights));
+    const double bytes = lineSpaceBytesBound(layout, shadowCasterCorners(scene));
     return gl::fitsResourceBudget("the line space at linespace.n " + std::to_string(n) +
                     ", linespace.depth " + std::to_string(depth),
             bytes, error);

@@ -46,7 +46,7 @@ struct LineSpaceLayout {
 
 // False with one line when shadow.method=linespace at `settings` would exceed the resource
 // budget (gl/Limits.h); true for the other methods.
-[[nodiscard]] bool lineSpaceFits(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-        const Settings& settings, std::string& error);
+[[nodiscard]] bool lineSpaceFits(const scene::Scene& scene, const Settings& settings,
+        std::string& error);
 
 } // namespace gi::render

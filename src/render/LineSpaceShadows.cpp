@@ -18,14 +18,6 @@ void dispatchFlat(std::uint64_t count, std::uint64_t perGroup) {
     glDispatchCompute(GLuint(x), GLuint((groups + x - 1) / x), 1);
 }
 
-std::vector<scene::EmitterTriangle> allEmitters(const std::vector<scene::Light>& lights) {
-    std::vector<scene::EmitterTriangle> emitters;
-    for (const scene::Light& light : lights) {
-        emitters.insert(emitters.end(), light.emitters.begin(), light.emitters.end());
-    }
-    return emitters;
-}
-
 bool bit(const std::vector<std::uint32_t>& words, std::uint64_t offset, std::uint64_t i) {
     return ((words[std::size_t(offset + i / 32)] >> (i % 32)) & 1u) != 0;
 }
@@ -45,21 +37,19 @@ bool LineSpaceShadows::buildPrograms(gl::ShaderLibrary& shaders, std::string& er
 }
 
 bool LineSpaceShadows::update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
-        const std::vector<scene::Light>& lights, std::uint64_t geometryVersion,
-        const LineSpaceSettings& settings, gl::GpuProfiler& profiler, std::string& error) {
-    std::vector<scene::EmitterTriangle> emitters = allEmitters(lights);
-    if (mBuilt && geometryVersion == mGeometryVersion && emitters == mEmitters &&
-            mStats.n == settings.n && mStats.depth == settings.depth) {
+        std::uint64_t geometryVersion, const LineSpaceSettings& settings,
+        gl::GpuProfiler& profiler, std::string& error) {
+    if (mBuilt && geometryVersion == mGeometryVersion && mStats.n == settings.n &&
+            mStats.depth == settings.depth) {
         return true;
     }
     const gl::GpuScope scope(profiler, "render/linespace/build");
     mBuilt = true;
     mGeometryVersion = geometryVersion;
-    mEmitters = std::move(emitters);
     mStats.n = settings.n;
     mStats.depth = settings.depth;
     if (!mShafts && !buildPrograms(shaders, error)) return false;
-    if (build(scene, lights, settings.n, settings.depth, error)) return true;
+    if (build(scene, settings.n, settings.depth, error)) return true;
     mNodes = {};
     mBits = {};
     return false;
@@ -90,11 +80,10 @@ void LineSpaceShadows::allocateNodes(const LineSpaceLayout& layout,
     }
 }
 
-bool LineSpaceShadows::build(const scene::Scene& scene, const std::vector<scene::Light>& lights,
-        int n, int depth, std::string& error) {
+bool LineSpaceShadows::build(const scene::Scene& scene, int n, int depth, std::string& error) {
     const auto start = std::chrono::steady_clock::now();
     const LineSpaceLayout layout = lineSpaceLayout(scene.bounds, n, depth);
-    const std::vector<glm::vec4> corners = shadowCasterCorners(scene, lights);
+    const std::vector<glm::vec4> corners = shadowCasterCorners(scene);
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     if (double(layout.occupancyWords()) * 4.0 > double(maxBlock)) {

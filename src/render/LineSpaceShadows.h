@@ -34,12 +34,10 @@ struct LineSpaceStats {
 
 class LineSpaceShadows {
 public:
-    // Rebuilds when `geometryVersion`, the lights' emitters or n / depth differ from the last
-    // build (the programs are built on first use). False with `error` when the build fails:
+    // Rebuilds when `geometryVersion` or n / depth differ from the last build (the programs are built on first use). False with `error` when the build fails:
     // nothing is occluded then, and it is not tried again for the same inputs. A build is
     // timed as the pass render/linespace/build.
-    bool update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
-            const std::vector<scene::Light>& lights, std::uint64_t geometryVersion,
+    bool update(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::uint64_t geometryVersion,
             const LineSpaceSettings& settings, gl::GpuProfiler& profiler, std::string& error);
     // Binds the node and line-space pools (an empty tree before the first build).
     void bind();
@@ -47,8 +45,7 @@ public:
 
 private:
     bool buildPrograms(gl::ShaderLibrary& shaders, std::string& error);
-    bool build(const scene::Scene& scene, const std::vector<scene::Light>& lights, int n, int depth,
-            std::string& error);
+    bool build(const scene::Scene& scene, int n, int depth, std::string& error);
     // Numbers the non-empty inner nodes from the occupancy of levels 0 .. depth - 1.
     void allocateNodes(const LineSpaceLayout& layout, const std::vector<std::uint32_t>& occupancy,
             std::vector<std::uint32_t>& children, std::vector<glm::uvec4>& cells) const;
@@ -58,7 +55,6 @@ private:
     LineSpaceStats mStats;
     bool mBuilt = false;
     std::uint64_t mGeometryVersion = 0;
-    std::vector<scene::EmitterTriangle> mEmitters;
 };
 
 } // namespace gi::render

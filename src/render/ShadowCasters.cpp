@@ -4,23 +4,12 @@
 
 namespace gi::render {
 
-std::set<std::pair<int, int>> emitterTriangles(const std::vector<scene::Light>& lights) {
-    std::set<std::pair<int, int>> triangles;
-    for (const scene::Light& light : lights) {
-        for (const scene::EmitterTriangle& t : light.emitters) triangles.insert({t.instance, t.triangle});
-    }
-    return triangles;
-}
-
-std::vector<glm::vec4> shadowCasterCorners(const scene::Scene& scene,
-        const std::vector<scene::Light>& lights) {
-    const std::set<std::pair<int, int>> skip = emitterTriangles(lights);
+std::vector<glm::vec4> shadowCasterCorners(const scene::Scene& scene) {
     std::vector<glm::vec4> corners;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const scene::Instance& instance = scene.instances[i];
         const scene::Primitive& primitive = scene.primitives[std::size_t(instance.primitive)];
         for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
-            if (skip.count({int(i), int(t / 3)}) > 0) continue;
             glm::vec3 p[3];
             for (int k = 0; k < 3; ++k) {
                 p[k] = glm::vec3(instance.worldFromLocal *

@@ -1,23 +1,20 @@
-// The triangles that cast shadows for the ray-traced shadow methods (bvh, linespace): every
-// triangle of every instance except the area lights' own, which must not shadow their light.
+// The triangles that cast shadows for the ray-traced shadow methods (bvh, linespace) and the
+// GI modes' rays: every triangle of every instance, the area lights' own included, as in the
+// path tracer. An emitting surface is opaque to every other light; its own light is not
+// shadowed by it because a ray to a point drawn on it stops short of that point
+// (direct_visibility.glsl: shadowRayEnd).
 #pragma once
 
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
 
-#include <set>
-#include <utility>
 #include <vector>
 
 namespace gi::render {
 
-// (instance, triangle) of every emitting triangle of `lights`.
-[[nodiscard]] std::set<std::pair<int, int>> emitterTriangles(const std::vector<scene::Light>& lights);
-
 // Three world-space corners per casting triangle in its current pose (w = 0); degenerate
 // triangles are left out.
-[[nodiscard]] std::vector<glm::vec4> shadowCasterCorners(const scene::Scene& scene,
-        const std::vector<scene::Light>& lights);
+[[nodiscard]] std::vector<glm::vec4> shadowCasterCorners(const scene::Scene& scene);
 
 } // namespace gi::render

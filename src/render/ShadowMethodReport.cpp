@@ -59,7 +59,7 @@ ShadowMethodReport plannedShadowMethod(const scene::Scene& scene,
                 std::to_string(levels) + " levels";
         report.bytes = gl::totalBytes(voxel::VoxelTextures::memoryFor(settings.voxel.resolution, levels, false));
     } else {
-        const std::vector<glm::vec4> corners = shadowCasterCorners(scene, lights);
+        const std::vector<glm::vec4> corners = shadowCasterCorners(scene);
         const std::size_t triangles = corners.size() / 3;
         if (method == SHADOW_METHOD_BVH) {
             // At most one leaf per triangle: 2 t - 1 nodes of two vec4, three vec4 per triangle.

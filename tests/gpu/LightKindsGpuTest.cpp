@@ -15,33 +15,6 @@
 namespace gi::test {
 namespace {
 
-// A grey floor (half-size 1) and a small square over one corner emitting downwards, seen from
-// above; no lights yet. The square stands where no light of punctualAndDistantLights() casts
-// its shadow into the middle of the floor, which the test probes: the ray-traced shadow
-// methods leave emitting surfaces out of the casters (render/ShadowCasters.h), shadow maps do
-// not, and that difference is not what this test is about.
-scene::Scene floorUnderSmallEmitter() {
-    scene::Scene scene;
-    scene::Material grey, emitter;
-    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    emitter.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    emitter.emissiveFactor = glm::vec3(1.5f);
-    scene.materials = {grey, emitter};
-    addPrimitive(scene, horizontalSquare(1.0f, 0.0f));
-    scene::Primitive top = horizontalSquare(0.15f, 0.6f);
-    top.localBounds = {};
-    for (glm::vec3& p : top.positions) {
-        p += glm::vec3(-0.7f, 0.0f, -0.7f);
-        top.localBounds.extend(p);
-    }
-    top.indices = {0, 1, 2, 0, 2, 3};   // facing -Y
-    top.normals.assign(4, glm::vec3(0.0f, -1.0f, 0.0f));
-    top.material = 1;
-    addPrimitive(scene, top);
-    scene.cameras.push_back(lookAtCamera({0.0f, 1.6f, 1.8f}, {0.0f, 0.0f, 0.0f}, 50.0f));
-    return scene;
-}
-
 // One light of every kind but the area lights, which addEmissionLights makes of the square.
 std::vector<scene::Light> punctualAndDistantLights() {
     scene::Light point, spot, sun, sky;
@@ -65,7 +38,10 @@ class LightKindsGpuTest : public GpuTest, public ::testing::WithParamInterface<i
 
 TEST_P(LightKindsGpuTest, EachKindLightsTheFloorAloneAndAmongTheOthers) {
     constexpr int kSize = 64;
-    scene::Scene scene = floorUnderSmallEmitter();
+    // A small lamp over one corner: no light of punctualAndDistantLights() casts its shadow
+    // into the middle of the floor, which the test probes (its shadows are
+    // EmitterShadowGpuTest's matter).
+    scene::Scene scene = floorUnderLamp(0.15f, 0.6f, {-0.7f, -0.7f}, 1.5f, {0.0f, 1.6f, 1.8f});
     scene::addEmissionLights(scene);
     ASSERT_FALSE(scene.lights.empty());
     for (const scene::Light& light : punctualAndDistantLights()) scene.lights.push_back(light);

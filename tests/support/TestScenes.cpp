@@ -23,12 +23,39 @@ scene::Primitive horizontalSquare(float halfSize, float y) {
     return p;
 }
 
+scene::Primitive downwardSquare(float halfSize, float y, const glm::vec2& centre, int material) {
+    scene::Primitive p = horizontalSquare(halfSize, y);
+    p.indices = {0, 1, 2, 0, 2, 3};   // counter-clockwise seen from -Y
+    p.normals.assign(4, glm::vec3(0.0f, -1.0f, 0.0f));
+    p.material = material;
+    p.localBounds = {};
+    for (glm::vec3& v : p.positions) {
+        v += glm::vec3(centre.x, 0.0f, centre.y);
+        p.localBounds.extend(v);
+    }
+    return p;
+}
+
 void addPrimitive(scene::Scene& scene, scene::Primitive primitive) {
     scene::Instance instance;
     instance.primitive = int(scene.primitives.size());
     scene.bounds.extend(primitive.localBounds);
     scene.primitives.push_back(std::move(primitive));
     scene.instances.push_back(instance);
+}
+
+scene::Scene floorUnderLamp(float lampHalf, float lampHeight, const glm::vec2& lampCentre,
+        float emission, const glm::vec3& eye) {
+    scene::Scene scene;
+    scene::Material grey, lamp;
+    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    lamp.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    lamp.emissiveFactor = glm::vec3(emission);
+    scene.materials = {grey, lamp};
+    addPrimitive(scene, horizontalSquare(1.0f, 0.0f));
+    addPrimitive(scene, downwardSquare(lampHalf, lampHeight, lampCentre, 1));
+    scene.cameras.push_back(lookAtCamera(eye, {0.0f, 0.0f, 0.0f}, 50.0f));
+    return scene;
 }
 
 scene::Scene floorWithPlate(float plateHalf, float plateHeight) {

@@ -10,6 +10,18 @@ namespace gi::test {
 // A horizontal square of half-size `halfSize` at height y, facing +Y, material 0.
 [[nodiscard]] scene::Primitive horizontalSquare(float halfSize, float y);
 
+// A horizontal square of half-size `halfSize` centred on (centre.x, y, centre.y), facing -Y
+// (emitting downwards when its material emits), material `material`.
+[[nodiscard]] scene::Primitive downwardSquare(float halfSize, float y, const glm::vec2& centre,
+        int material);
+
+// A grey floor (half-size 1, albedo 0.5, material 0) under a black square (material 1) of
+// half-size `lampHalf` centred on (lampCentre.x, lampHeight, lampCentre.y), emitting `emission`
+// downwards, seen from `eye` towards the floor's centre. No lights: scene::addEmissionLights
+// makes the square's.
+[[nodiscard]] scene::Scene floorUnderLamp(float lampHalf, float lampHeight,
+        const glm::vec2& lampCentre, float emission, const glm::vec3& eye);
+
 // Adds `primitive` with an identity transform and grows the scene bounds.
 void addPrimitive(scene::Scene& scene, scene::Primitive primitive);
 
