@@ -57,7 +57,8 @@ void main() {
     // 4x4 or 2x2 turns over cells of one or 2x2 pixels, as RingDither.h derives them from the
     // filter's window (smoothing.y = 8 x turns + cell); the filter pass averages them back into
     // a smooth result. The 2x2 corner of the 4x4 Bayer matrix holds turns 0, 4, 8 and 12 of
-    // 16, evenly spaced.
+    // 16, evenly spaced. Where the window is too small for a dither (one turn) every pixel
+    // turns by the 16 turns' mean, half the ring's spacing.
     float ringTurn = 0.0;
     if (voxel.smoothing.y != 0.0) {
         const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
@@ -66,7 +67,8 @@ void main() {
         int turns = code / 8, cellPixels = code % 8;
         ivec2 pixel = ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz;
         ivec2 cell = (pixel / cellPixels) & (turns - 1);
-        ringTurn = (bayer[cell.y * 4 + cell.x] + 0.5) / 16.0 * (PI / 4.0);
+        float turn = turns == 1 ? 7.5 : bayer[cell.y * 4 + cell.x];   // 7.5: the 16 turns' mean
+        ringTurn = (turn + 0.5) / 16.0 * (PI / 4.0);
     }
     vec3 irradiance = coneIrradiance(origin, n, ringTurn, voxel.trace.y);
     outIndirect = vec4(irradiance, viewDepth);

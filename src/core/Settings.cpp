@@ -280,8 +280,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "while lights and geometry stay the same (0 = every pass every frame)",
                 [](Settings& s) -> bool& { return s.voxel.cache; }),
         boolSetting("voxel.jitter",
-                "turn the cone ring per pixel in a 2x2 or 4x4 pattern of pixels or quads, a whole "
-                "period within voxel.filter's window",
+                "turn the cone ring per pixel in a 2x2 or 4x4 pattern of quads, a whole period "
+                "within voxel.filter's window (none where the window is 3x3; 4x4 pixels without "
+                "the filter)",
                 [](Settings& s) -> bool& { return s.voxel.jitter; }),
         intSetting("voxel.filter",
                 "edge-aware smoothing radius of the traced result (texels at voxel.trace_scale=0.5, "
