@@ -104,7 +104,9 @@ float voxelShadowCone(GpuLight light, vec3 position, vec3 n) {
     vec3 toLight;
     float distance;
     lightDirection(light, position, toLight, distance);
-    if (lightsOfKind(LIGHT_DIRECTIONAL) && type == LIGHT_DIRECTIONAL) return voxelConeVisibility(position, n, toLight, 1e30, 0.0);
+    if (lightsOfKind(LIGHT_DIRECTIONAL) && type == LIGHT_DIRECTIONAL) {
+        return voxelConeVisibility(position, n, toLight, 1e30, 0.0);
+    }
     float radius = type == LIGHT_AREA ? light.spotCone.w : 0.0;
     // A quarter of the light's angular radius: the coarse voxels a wider cone reads spill
     // over the walls beside its path. On the emissive Cornell box (scripts/measure_shadows.py)

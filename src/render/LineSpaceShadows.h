@@ -34,11 +34,13 @@ struct LineSpaceStats {
 
 class LineSpaceShadows {
 public:
-    // Rebuilds when `geometryVersion` or n / depth differ from the last build (the programs are built on first use). False with `error` when the build fails:
-    // nothing is occluded then, and it is not tried again for the same inputs. A build is
-    // timed as the pass render/linespace/build.
-    bool update(gl::ShaderLibrary& shaders, const scene::Scene& scene, std::uint64_t geometryVersion,
-            const LineSpaceSettings& settings, gl::GpuProfiler& profiler, std::string& error);
+    // Rebuilds when `geometryVersion` or n / depth differ from the last build (the programs
+    // are built on first use). False with `error` when the build fails: nothing is occluded
+    // then, and it is not tried again for the same inputs. A build is timed as the pass
+    // render/linespace/build.
+    bool update(gl::ShaderLibrary& shaders, const scene::Scene& scene,
+            std::uint64_t geometryVersion, const LineSpaceSettings& settings,
+            gl::GpuProfiler& profiler, std::string& error);
     // Binds the node and line-space pools (an empty tree before the first build).
     void bind();
     const LineSpaceStats& stats() const { return mStats; }

@@ -88,13 +88,16 @@ TEST_P(LightKindsGpuTest, EachKindLightsTheFloorAloneAndAmongTheOthers) {
     }
     EXPECT_GT(probes, 40);
     for (const auto& [type, light] : lightFrom) {
-        EXPECT_GT(light / probes, 1e-3) << "light kind " << int(type) << " alone left the floor dark";
+        EXPECT_GT(light / probes, 1e-3)
+                << "light kind " << int(type) << " alone left the floor dark";
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadowMethods, LightKindsGpuTest,
         ::testing::Values(SHADOW_METHOD_SHADOWMAP, SHADOW_METHOD_BVH),
-        [](const auto& info) { return info.param == SHADOW_METHOD_SHADOWMAP ? "shadowmap" : "bvh"; });
+        [](const auto& info) {
+            return info.param == SHADOW_METHOD_SHADOWMAP ? "shadowmap" : "bvh";
+        });
 
 } // namespace
 } // namespace gi::test

@@ -24,8 +24,8 @@ struct RingDither {
 // entered each window 4:2:2:1, not evenly: the quarter-resolution scoreboard was no better
 // with them than without (results-performance.md), and the trace cost x1.2, so there every
 // pixel turns alike, by the dither's mean turn (half the ring's spacing: a ring aligned with
-// the surface's tangent axes scored worse). Without the filter (radius 0) the 4x4 dither of single pixels stays, as
-// voxel.jitter asks for it.
+// the surface's tangent axes scored worse). Without the filter (radius 0) the 4x4 dither of
+// single pixels stays, as voxel.jitter asks for it.
 constexpr RingDither ringDither(int filterTexels) {
     if (filterTexels <= 0) return {4, 1};
     const int window = 2 * filterTexels + 1;
