@@ -35,7 +35,7 @@ def load_modules():
 TRACE = os.path.join("voxel", "cone_tracing.glsl")
 TRACE_MAIN = os.path.join("voxel", "cone_trace.frag")
 CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
-RING_LOOP = "for (int i = 0; i < 8; ++i) {"
+RING_LOOP = "for (int k = 0; k < 2; ++k) {"
 LIGHT_CALL = "reflected = coarsestLight("
 PYRAMID_READ = "textureLod(voxelPyramidTexture, uvw, lod);"
 PYRAMID_TEXEL = ("texelFetch(voxelPyramidTexture, clamp(ivec3(uvw * float(max((voxelResolution() / 2) "
@@ -69,10 +69,10 @@ PEER_TRACE = """
 # name -> (what it switches off, [(old, new), ...] in cone_tracing.glsl)
 PROFILE = {
     "no cones": ("every cone (rasterisation, material and set-up remain)", [
-        ("vec3 e = voxel.traceWeights.x * " + CONE_CALL, "vec3 e = vec3(origin * 1e-9);"),
-        (RING_LOOP, "for (int i = 0; i < 0; ++i) {")]),
-    "1 cone": ("the 8 ring cones (the central cone remains)", [
-        (RING_LOOP, "for (int i = 0; i < 0; ++i) {")]),
+        ("vec3 e = voxel.cones.x * " + CONE_CALL, "vec3 e = vec3(origin * 1e-9);"),
+        (RING_LOOP, "for (int k = 0; k < 0; ++k) {")]),
+    "1 cone": ("the ring cones (the central cone remains)", [
+        (RING_LOOP, "for (int k = 0; k < 0; ++k) {")]),
     "no light reads": ("the light read where a cone meets a surface (coarsestLight: "
                        "filtered voxels and the pyramid)", [
         (LIGHT_CALL, "reflected = vec3(0.25) + 0.0 * (")]),
@@ -90,7 +90,7 @@ PROFILE = {
         (TRACE_CONE_DECL, TRACE_CONE_DECL + PEER_TRACE)]),
 }
 
-# What each iteration of a cone's walk did, counted per pixel over its 9 cones.
+# What each iteration of a cone's walk did, counted per pixel over all its cones.
 COUNTER_NAMES = ["leaps through empty space", "empty voxels stepped through",
                  "occupied voxels facing away", "planes the axis missed", "surfaces met",
                  "finer-level samples", "final opacity"]
@@ -152,7 +152,7 @@ def counts(shader_dir, settings, size):
     width = image.shape[1] // 4 * 4
     columns = [image[:, k:width:4] for k in range(4)]
     covered = columns[3].sum(axis=2) > 0
-    per_cone = columns[3][covered][:, 0].mean()   # 9 cones' worth, as read back
+    per_cone = columns[3][covered][:, 0].mean()   # all the pixel's cones' worth, as read back
     means = [columns[k][covered].mean(axis=0) / per_cone for k in range(3)]
     values = [means[0][0], means[0][1], means[0][2], means[1][0], means[1][1], means[1][2],
               means[2][0]]

@@ -415,8 +415,11 @@ struct VoxelUniforms {                  // std140
     vec4 trace;                         // x = cone half-angle tan, y = max distance (m),
                                         // z = step factor (x cone diameter), w = 1 to apply
                                         // the thesis' 1/(1+d^2) falloff
-    vec4 traceWeights;                  // x = weight of the central cone, y = weight of each
-                                        // ring cone, z = cos of ring angle, w = sin of it
+    vec4 cones;                         // x = weight of the central cone, y = pixel classes
+                                        // sharing the rings' cones (1 or 2), zw = unused
+                                        // (ConeSet.h)
+    vec4 coneRings[2];                  // per ring: x = cones, y = cos of their angle from
+                                        // the normal, z = sin of it, w = each cone's weight
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
                                         // fragment is discarded, yzw = unused
     vec4 modes;                         // x = INJECT_* weighting, y = 1 when surfaces

@@ -1,8 +1,9 @@
 // A further bounce of light in the voxels (gi.bounces > 1, BouncePass.h). Over every voxel a
 // level was voxelized into itself (all of level 0, the outer shell of coarser levels; their
 // centres are propagated again afterwards):
-//   STEP_GATHER  9 cones from the voxel's surface over the hemisphere its mean normal faces
-//                (cone_tracing.glsl, as the screen-space trace) give the indirect irradiance
+//   STEP_GATHER  every cone of voxel.cones from the voxel's surface over the hemisphere its
+//                mean normal faces (cone_tracing.glsl, as the screen-space trace; no pixels
+//                to share them with) give the indirect irradiance
 //                G it receives from the voxels' present light, E_direct + the last bounce's
 //                G. Written, premultiplied by coverage, to the helper (the cones read the
 //                irradiance it will change).
@@ -50,11 +51,12 @@ void main() {
     vec3 centre = levelOrigin(level) + (vec3(texel - ivec3(0, 0, level * v)) + 0.5) * size;
     vec3 surface = centre + n * (plane.w * size);
     // Leave the surface's own voxel before the first sample, as the screen-space trace does;
-    // the ring turns by a random angle per voxel, so neighbours sample different directions.
+    // the rings turn by a random part of their spacing per voxel, so neighbours sample
+    // different directions.
     vec3 origin = surface + n * size;
     uint seed = hash(uint(texel.x) + uint(v) * (uint(texel.y) + uint(v) * uint(texel.z)));
-    float ringTurn = float(seed >> 8) / 16777216.0 * (PI / 4.0);
-    vec3 gathered = coneIrradiance(origin, n, ringTurn, voxel.trace.y);
+    float turn = float(seed >> 8) / 16777216.0;
+    vec3 gathered = coneIrradiance(origin, n, turn, 0, 1, voxel.trace.y);
     imageStore(voxelHelper, texel, vec4(min(gathered * coverage, vec3(HALF_STORE_MAX)), 0.0));
 #else
     vec4 gathered = imageLoad(voxelHelper, texel);

@@ -1,7 +1,7 @@
 // Screen-space cone tracing (thesis 4.3.3.4): every visible surface point gathers its
-// indirect irradiance E_ind (W/m^2, DESIGN.md) from 9 cones through the voxel cascade
+// indirect irradiance E_ind (W/m^2, DESIGN.md) from diffuse cones through the voxel cascade
 // (cone_tracing.glsl: the cones, their weights and how they read the voxels). With glossy
-// materials (SHADING_GLTF) a tenth cone follows the specular lobe's core towards the camera;
+// materials (SHADING_GLTF) one more cone follows the specular lobe's core towards the camera;
 // with the diffuse cones' mean radiance for its tails, times the lobe's split-sum albedo
 // F0 A + B, it is the indirect specular radiance (brdf.glsl: the cone's direction, its
 // aperture and share from the roughness, the albedo table).
@@ -53,24 +53,30 @@ void main() {
     // voxel.cone_offset finest voxels out (a length, whatever level holds the surface).
     vec3 origin = vin.position +
             n * max(levelVoxelSize(level), voxel.smoothing.w * levelVoxelSize(0));
-    // With voxel.jitter the ring turns by an ordered-dither fraction of its 45-degree spacing:
-    // 4x4 or 2x2 turns over cells of one or 2x2 pixels, as RingDither.h derives them from the
+    // With voxel.jitter the rings turn by an ordered-dither fraction of their spacing: 4x4 or
+    // 2x2 turns over cells of one or 2x2 pixels, as RingDither.h derives them from the
     // filter's window (smoothing.y = 8 x turns + cell); the filter pass averages them back into
     // a smooth result. The 2x2 corner of the 4x4 Bayer matrix holds turns 0, 4, 8 and 12 of
     // 16, evenly spaced. Where the window is too small for a dither (one turn) every pixel
-    // turns by the 16 turns' mean, half the ring's spacing.
-    float ringTurn = 0.0;
+    // turns by the 16 turns' mean, half the rings' spacing.
+    ivec2 pixel = ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz;
+    float turn = 0.0;
     if (voxel.smoothing.y != 0.0) {
         const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
                                           3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
         int code = int(voxel.smoothing.y);
         int turns = code / 8, cellPixels = code % 8;
-        ivec2 pixel = ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz;
         ivec2 cell = (pixel / cellPixels) & (turns - 1);
-        float turn = turns == 1 ? 7.5 : bayer[cell.y * 4 + cell.x];   // 7.5: the 16 turns' mean
-        ringTurn = (turn + 0.5) / 16.0 * (PI / 4.0);
+        float step = turns == 1 ? 7.5 : bayer[cell.y * 4 + cell.x];   // 7.5: the 16 turns' mean
+        turn = (step + 0.5) / 16.0;
     }
-    vec3 irradiance = coneIrradiance(origin, n, ringTurn, voxel.trace.y);
+    // With voxel.cone_interleave the pixels of a checkerboard trace alternate halves of the
+    // rings (ConeSet.h), which the filter merges. Single pixels, not the dither's cells: each
+    // cell holds both halves at its turn (cells of one half would give each half only some of
+    // the turns and bunch the rings' directions).
+    int classes = int(voxel.cones.y);
+    int coneClass = (pixel.x + pixel.y) % classes;
+    vec3 irradiance = coneIrradiance(origin, n, turn, coneClass, classes, voxel.trace.y);
     outIndirect = vec4(irradiance, viewDepth);
     if (traceSpecularCone()) {
         vec3 v = normalize(frame.cameraPosition.xyz - vin.position);

@@ -1,15 +1,17 @@
 // Cone tracing through the voxel cascade (thesis 4.2.5, 4.3.3.4, Listing 4.5), shared by the
 // screen-space trace (cone_trace.frag) and the voxels' own gather of a further bounce
-// (bounce_gather.comp): coneIrradiance traces 9 cones over a surface's hemisphere, one along
-// the normal and eight rotated by 50 degrees around it, each marched front to back until it
-// is opaque or leaves the volume. Voxels facing away from the cone are skipped (thesis).
+// (bounce_gather.comp): coneIrradiance traces the cones of voxel.cones over a surface's
+// hemisphere (ConeSet.h: the thesis' 9, one along the normal and eight rotated by 50 degrees
+// around it, or 19 in two rings), each marched front to back until it is opaque or leaves
+// the volume. Voxels facing away from the cone are skipped (thesis).
 //
 // Calibration (so the output is E_ind in W/m^2, DESIGN.md): a voxel's outgoing radiance is
 // albedo/pi * E; a cone returns the composited radiance L_i seen along it, and the sky's
 // radiance times what stays transparent where it escapes; E_ind = pi * sum_i w_i L_i, where w_i is the fraction of the
-// cosine-weighted hemisphere the cone stands for (central cap: sin^2(theta_b), each ring cone
-// cos^2(theta_b)/8, theta_b halfway between the central axis and the ring). The thesis'
-// weights (cos theta_i, normalised by their sum) differ from these by under 10%. Albedo and E
+// cosine-weighted hemisphere the cone stands for (ConeSet.h; for the thesis' 9, central cap
+// sin^2(theta_b), each ring cone cos^2(theta_b)/8, theta_b halfway between the central axis
+// and the ring). The thesis' weights (cos theta_i, normalised by their sum) differ from these
+// by under 10%. Albedo and E
 // are both stored premultiplied by coverage, so a filtered read's light per covered area is
 // albedo x E / coverage^2: an empty neighbour lowers a trilinear read's coverage, not the
 // albedo it returns.
@@ -352,18 +354,26 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
     return radiance;
 }
 
-// E_ind (W/m^2) on the side of a surface facing n, from 9 cones starting at origin (a voxel
-// off the surface); the ring of cones is turned by ringTurn radians around n.
-vec3 coneIrradiance(vec3 origin, vec3 n, float ringTurn, float maxDistance) {
+// E_ind (W/m^2) on the side of a surface facing n, from the cones of voxel.cones (ConeSet.h)
+// starting at origin (a voxel off the surface): one along n and the rings around it, each ring
+// turned by `turn` (a fraction of its spacing) and ring k by a further k halves of it, so the
+// rings interlace. Pixel class c of `classes` traces ring cones c, c + classes, ... weighted
+// x classes (the filter merges the classes); class 0 of 1 traces them all.
+vec3 coneIrradiance(vec3 origin, vec3 n, float turn, int coneClass, int classes,
+                    float maxDistance) {
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t);
-    float cosRing = voxel.traceWeights.z, sinRing = voxel.traceWeights.w;
     float tanHalf = voxel.trace.x;
-    vec3 e = voxel.traceWeights.x * traceCone(origin, n, maxDistance, tanHalf);
-    for (int i = 0; i < 8; ++i) {
-        float phi = float(i) * (PI / 4.0) + ringTurn;
-        vec3 dir = cosRing * n + sinRing * (cos(phi) * t + sin(phi) * b);
-        e += voxel.traceWeights.y * traceCone(origin, dir, maxDistance, tanHalf);
+    vec3 e = voxel.cones.x * traceCone(origin, n, maxDistance, tanHalf);
+    for (int k = 0; k < 2; ++k) {
+        vec4 ring = voxel.coneRings[k];
+        int count = int(ring.x);
+        float spacing = 2.0 * PI / ring.x;
+        for (int i = coneClass; i < count; i += classes) {
+            float phi = (float(i) + 0.5 * float(k) + turn) * spacing;
+            vec3 dir = ring.y * n + ring.z * (cos(phi) * t + sin(phi) * b);
+            e += ring.w * float(classes) * traceCone(origin, dir, maxDistance, tanHalf);
+        }
     }
     return PI * e;
 }

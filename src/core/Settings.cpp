@@ -258,8 +258,21 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "centre the cascade on the scene (finest level holds it) instead of the camera "
                 "(fixed plan)",
                 [](Settings& s) -> bool& { return s.voxel.sceneCentred; }),
-        floatSetting("voxel.cone_angle", "full aperture of each of the 9 diffuse cones, degrees", 5.0f,
-                90.0f, [](Settings& s) -> float& { return s.voxel.coneAngle; }),
+        choiceSetting("voxel.cones",
+                "diffuse cones per surface point: 9 (the thesis: one on the normal, eight at 50 "
+                "degrees), 19 (one on the normal, 6 at 27 and 12 at 56 degrees, each 1/19 of "
+                "the cosine-weighted hemisphere), or the plan's (19 on the adaptive plan, 9 on "
+                "the fixed)",
+                {"plan", "9", "19"}, [](Settings& s) -> int& { return s.voxel.cones; }),
+        boolSetting("voxel.cone_interleave",
+                "with 19 cones, neighbouring pixels trace alternate halves of the cone rings and "
+                "the filter merges them (10 cones per pixel, about half the trace); needs "
+                "voxel.filter; a moving camera's trace reuse strays further from the full trace",
+                [](Settings& s) -> bool& { return s.voxel.coneInterleave; }),
+        floatSetting("voxel.cone_angle",
+                "full aperture of each diffuse cone, degrees (0 = the cone set's own: 45 for 9 "
+                "cones, 37.3 for 19)",
+                0.0f, 90.0f, [](Settings& s) -> float& { return s.voxel.coneAngle; }),
         floatSetting("voxel.step", "cone sample spacing in cone diameters", 0.1f, 2.0f,
                 [](Settings& s) -> float& { return s.voxel.stepFactor; }),
         floatSetting("voxel.footprint",

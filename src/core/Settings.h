@@ -35,6 +35,9 @@ struct LineSpaceSettings {
 // surface met (surface): the wide read then averages only surfaces facing the way it faces,
 // not the shaded sides of whatever else its texels hold (accuracy-analysis.md).
 enum LightRead : int { LIGHT_READ_CONE = 0, LIGHT_READ_SURFACE = 1 };
+// voxel.cones: the diffuse cones each surface point traces (gi/voxel/ConeSet.h); PLAN is
+// resolved by render::applyPlan (19 on the adaptive plan, the thesis' 9 on the fixed).
+enum VoxelCones : int { VOXEL_CONES_PLAN = 0, VOXEL_CONES_THESIS = 1, VOXEL_CONES_RINGS = 2 };
 
 // Voxel cone tracing (SEEDS.md section 1); defaults are the thesis' reference settings.
 struct VoxelSettings {
@@ -79,7 +82,13 @@ struct VoxelSettings {
                                   // kept inside the scene's bounds (the adaptive plan's choice)
     float size = 0.0f;            // voxel.size: finest voxel edge (m) of the adaptive plan;
                                   // 0 = the scene's shortest side / voxel.resolution
-    float coneAngle = 45.0f;      // voxel.cone_angle: full aperture of each diffuse cone, degrees
+    int cones = VOXEL_CONES_PLAN; // voxel.cones: the plan's, 9 (the thesis') or 19 diffuse
+                                  // cones
+    bool coneInterleave = false;  // voxel.cone_interleave: neighbouring pixels trace
+                                  // alternate halves of the 19 cones' rings (merged by the
+                                  // filter)
+    float coneAngle = 0.0f;       // voxel.cone_angle: full aperture of each diffuse cone,
+                                  // degrees; 0 = the cone set's own (45 or 37.3)
     float stepFactor = 1.0f;      // voxel.step: sample spacing in cone diameters (thesis: 1)
     float footprint = 0.6f;       // voxel.footprint: texel width of the light pyramid mip a
                                   // cone reads, in cone diameters (thesis: 1; a trilinear

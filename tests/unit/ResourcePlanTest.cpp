@@ -172,6 +172,27 @@ TEST(ResourcePlan, InjectionHasTwoLightPixelsPerFinestVoxel) {
     EXPECT_EQ(applyPlan(fixed, thesis).voxel.injectResolution, 0);
 }
 
+TEST(ResourcePlan, ConesAreNineteenOnTheAdaptivePlanAndTheThesisNineOnTheFixed) {
+    const scene::Scene box = test::loadCornellBox();
+    const Settings requested = adaptive(32);
+    EXPECT_EQ(requested.voxel.cones, VOXEL_CONES_PLAN);
+    EXPECT_EQ(applyPlan(requested, planResources(box, box.lights, requested, startEye(box)))
+                      .voxel.cones,
+            VOXEL_CONES_RINGS);
+    const Settings fixed = test::thesisAllocation();
+    EXPECT_EQ(applyPlan(fixed, planResources(box, box.lights, fixed, startEye(box))).voxel.cones,
+            VOXEL_CONES_THESIS);
+    // A set the user names is kept on either plan.
+    Settings given = fixed;
+    given.voxel.cones = VOXEL_CONES_RINGS;
+    EXPECT_EQ(applyPlan(given, planResources(box, box.lights, given, startEye(box))).voxel.cones,
+            VOXEL_CONES_RINGS);
+    given = requested;
+    given.voxel.cones = VOXEL_CONES_THESIS;
+    EXPECT_EQ(applyPlan(given, planResources(box, box.lights, given, startEye(box))).voxel.cones,
+            VOXEL_CONES_THESIS);
+}
+
 TEST(ResourcePlan, LightsThatCannotReachTheSceneAreLeftOut) {
     scene::Aabb room;
     room.extend(glm::vec3(0.0f));

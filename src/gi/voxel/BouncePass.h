@@ -1,7 +1,7 @@
 // One more bounce of light in the voxels (gi.bounces > 1; shaders/voxel/bounce.comp): every
-// occupied voxel its level voxelized traces 9 cones from its surface through the cascade as
-// it is lit now, and its irradiance becomes the injected direct light plus what the cones
-// gathered. The caller then propagates again and rebuilds the radiance pyramid, so the next
+// occupied voxel its level voxelized traces every diffuse cone from its surface through the
+// cascade as it is lit now, and its irradiance becomes the injected direct light plus what the
+// cones gathered. The caller then propagates again and rebuilds the radiance pyramid, so the next
 // gather (the next bounce, or the screen-space trace) sees light that has bounced once more.
 // Inputs : VoxelTextures albedo, normal, irradiance and pyramid as propagated (sampled by the
 //          cones); VoxelUniforms; FrameUniforms (the sky a cone sees where it escapes).

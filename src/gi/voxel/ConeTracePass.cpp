@@ -67,7 +67,7 @@ void ConeTracePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfile
         glProgramUniform2f(p, LOC_CONE_TRACE_OFFSET, offset.x, offset.y);
     }
     // Depth first, so that only the visible surface of each pixel traces its cones: without
-    // it every surface drawn before the one in front traced 9 cones for nothing.
+    // it every surface drawn before the one in front traced its cones for nothing.
     in.scene.drawDepthPrepass(mDepthProgram.id());
     glUseProgram(program);
     glProgramUniform3i(program, LOC_CONE_TRACE_PATTERN, stride, out.pattern.phase.x,

@@ -1,5 +1,6 @@
 #include "gi/voxel/VoxelizationManager.h"
 
+#include "gi/voxel/ConeSet.h"
 #include "gi/voxel/RingDither.h"
 #include "gl/Limits.h"
 
@@ -123,22 +124,24 @@ void VoxelizationManager::writeUniforms() {
                      : mSettings.lightRead == LIGHT_READ_SURFACE ? VOXEL_KIND_ANISOTROPIC_SURFACE_READ
                                                                  : VOXEL_KIND_ANISOTROPIC;
     u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), kind, mSettings.pyramidMips);
-    const float halfAngle = glm::radians(mSettings.coneAngle) * 0.5f;
+    const ConeSet cones = coneSet(mSettings.cones, mSettings.coneAngle);
+    const float halfAngle = glm::radians(cones.apertureDegrees) * 0.5f;
     const float maxDistance = mSettings.maxDistance > 0.0f
             ? mSettings.maxDistance
             : mVolume.extent(mVolume.levels() - 1) * std::sqrt(3.0f);
     u.trace = glm::vec4(std::tan(halfAngle), maxDistance, mSettings.stepFactor,
             mSettings.falloff ? 1.0f : 0.0f);
-    // The 9 cones partition the cosine-weighted hemisphere at theta_b, halfway between the
-    // normal and the ring of cones at 50 degrees (see cone_tracing.glsl).
-    const float ringAngle = glm::radians(50.0f);
-    const float boundary = 0.5f * ringAngle;
-    const float central = std::sin(boundary) * std::sin(boundary);
-    u.traceWeights = glm::vec4(central, (1.0f - central) / 8.0f, std::cos(ringAngle), std::sin(ringAngle));
     const int filterRadius = filterTexels(mSettings);
     const float dither = mSettings.jitter ? float(ringDither(filterRadius).code()) : 0.0f;
     u.smoothing = glm::vec4(float(filterRadius), dither, std::log2(mSettings.footprint),
             mSettings.coneOffset);
+    const int classes = conePixelClasses(mSettings.cones, mSettings.coneInterleave, filterRadius);
+    u.cones = glm::vec4(cones.centralWeight, float(classes), 0.0f, 0.0f);
+    for (std::size_t k = 0; k < cones.rings.size(); ++k) {
+        const ConeRing& ring = cones.rings[k];
+        u.coneRings[k] = glm::vec4(float(ring.count), std::cos(ring.elevation),
+                std::sin(ring.elevation), ring.weight);
+    }
     // One raster over the coarsest level, or one per level over its own extent
     // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
     const float rasterPixel = 1.0f / float(mSettings.multiplier);

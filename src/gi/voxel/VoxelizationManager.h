@@ -1,7 +1,8 @@
 // Voxel cone tracing GI, the VoxelizationManager of the thesis (SEEDS.md section 1, thesis
 // 4.3.1): every frame it re-centres the cascade on the camera, clears it, voxelizes the
 // scene, injects every light, propagates to the coarser levels (and, with voxel.anisotropic,
-// builds the directional voxels) and traces 9 cones per pixel at a reduced resolution. The thesis recomputes everything each frame (voxel.cache=0); by
+// builds the directional voxels) and traces the diffuse cones (ConeSet.h) at a reduced
+// resolution. The thesis recomputes everything each frame (voxel.cache=0); by
 // default (voxel.cache=1) work whose inputs did not change is kept:
 //   - a static scene whose cascade placement and lights are unchanged is not revoxelized,
 //     injected or propagated: only the cone trace runs;
