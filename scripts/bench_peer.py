@@ -31,7 +31,8 @@ import interleaved as il  # noqa: E402
 import measure_common as common  # noqa: E402
 
 PEER_CONES = 10     # 9 diffuse + 1 shadow cone per pixel
-OUR_CONES = 9
+# The default 19 diffuse cones at every traced pixel (src/gi/voxel/ConeSet.h).
+OUR_CONES = 19
 LOG_LINE = re.compile(r"delta: ([0-9.]+), frame count: (\d+)")
 SECTION_BEGIN = "<!-- bench_peer.py: begin -->"
 SECTION_END = "<!-- bench_peer.py: end -->"
