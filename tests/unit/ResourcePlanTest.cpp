@@ -193,6 +193,22 @@ TEST(ResourcePlan, ConesAreNineteenOnTheAdaptivePlanAndTheThesisNineOnTheFixed) 
             VOXEL_CONES_THESIS);
 }
 
+TEST(ResourcePlan, TheDescriptionNamesEachPlansConeSet) {
+    const scene::Scene box = test::loadCornellBox();
+    const Settings requested = adaptive(32);
+    EXPECT_NE(describePlan(planResources(box, box.lights, requested, startEye(box)))
+                      .find("19 diffuse cones (1 + 6 + 12) of 37.3 degrees"),
+            std::string::npos);
+    Settings fixed = test::thesisAllocation();
+    EXPECT_NE(describePlan(planResources(box, box.lights, fixed, startEye(box)))
+                      .find("9 diffuse cones (1 + 8) of 45 degrees"),
+            std::string::npos);
+    fixed.voxel.coneAngle = 30.0f;
+    EXPECT_NE(describePlan(planResources(box, box.lights, fixed, startEye(box)))
+                      .find("9 diffuse cones (1 + 8) of 30 degrees"),
+            std::string::npos);
+}
+
 TEST(ResourcePlan, LightsThatCannotReachTheSceneAreLeftOut) {
     scene::Aabb room;
     room.extend(glm::vec3(0.0f));
