@@ -35,7 +35,7 @@ def load_modules():
 TRACE = os.path.join("voxel", "cone_tracing.glsl")
 TRACE_MAIN = os.path.join("voxel", "cone_trace.frag")
 CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
-RING_LOOP = "for (int k = 0; k < 2; ++k) {"
+RING_LOOP = "for (int k = 0; k < 3; ++k) {"
 LIGHT_CALL = "reflected = coarsestLight("
 PYRAMID_READ = "textureLod(voxelPyramidTexture, uvw, lod);"
 PYRAMID_TEXEL = ("texelFetch(voxelPyramidTexture, clamp(ivec3(uvw * float(max((voxelResolution() / 2) "

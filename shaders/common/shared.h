@@ -416,10 +416,12 @@ struct VoxelUniforms {                  // std140
                                         // z = step factor (x cone diameter), w = 1 to apply
                                         // the thesis' 1/(1+d^2) falloff
     vec4 cones;                         // x = weight of the central cone, y = pixel classes
-                                        // sharing the rings' cones (1 or 2), zw = unused
-                                        // (ConeSet.h)
-    vec4 coneRings[2];                  // per ring: x = cones, y = cos of their angle from
-                                        // the normal, z = sin of it, w = each cone's weight
+                                        // sharing the rings' cones (1 or 2), z = 1 when the
+                                        // dither moves the rings in elevation
+                                        // (voxel.jitter_elevation), w = unused (ConeSet.h)
+    vec4 coneRings[3];                  // per ring: x = cones (0: no ring), y = sin^2 of their
+                                        // angle from the normal, z = how far in sin^2 the
+                                        // dither moves them up and down, w = each cone's weight
     vec4 injection;                     // x = irradiance threshold (W/m^2) below which a
                                         // fragment is discarded, yzw = unused
     vec4 modes;                         // x = INJECT_* weighting, y = 1 when surfaces

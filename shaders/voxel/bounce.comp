@@ -56,7 +56,7 @@ void main() {
     vec3 origin = surface + n * size;
     uint seed = hash(uint(texel.x) + uint(v) * (uint(texel.y) + uint(v) * uint(texel.z)));
     float turn = float(seed >> 8) / 16777216.0;
-    vec3 gathered = coneIrradiance(origin, n, turn, 0, 1, voxel.trace.y);
+    vec3 gathered = coneIrradiance(origin, n, turn, 0.5, 0, 1, voxel.trace.y);
     imageStore(voxelHelper, texel, vec4(min(gathered * coverage, vec3(HALF_STORE_MAX)), 0.0));
 #else
     vec4 gathered = imageLoad(voxelHelper, texel);

@@ -60,7 +60,7 @@ void main() {
     // 16, evenly spaced. Where the window is too small for a dither (one turn) every pixel
     // turns by the 16 turns' mean, half the rings' spacing.
     ivec2 pixel = ivec2(gl_FragCoord.xy) * tracePattern.x + tracePattern.yz;
-    float turn = 0.0;
+    float turn = 0.0, rise = 0.5;
     if (voxel.smoothing.y != 0.0) {
         const float bayer[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0,
                                           3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
@@ -69,6 +69,9 @@ void main() {
         ivec2 cell = (pixel / cellPixels) & (turns - 1);
         float step = turns == 1 ? 7.5 : bayer[cell.y * 4 + cell.x];   // 7.5: the 16 turns' mean
         turn = (step + 0.5) / 16.0;
+        // voxel.jitter_elevation: the rise takes the turns' steps in another order (x 7
+        // modulo 16, a rank-1 lattice), so each cell's turn and rise pair up evenly.
+        if (voxel.cones.z != 0.0 && turns != 1) rise = (mod(step * 7.0, 16.0) + 0.5) / 16.0;
     }
     // With voxel.cone_interleave the pixels of a checkerboard trace alternate halves of the
     // rings (ConeSet.h), which the filter merges. Single pixels, not the dither's cells: each
@@ -76,7 +79,7 @@ void main() {
     // the turns and bunch the rings' directions).
     int classes = int(voxel.cones.y);
     int coneClass = (pixel.x + pixel.y) % classes;
-    vec3 irradiance = coneIrradiance(origin, n, turn, coneClass, classes, voxel.trace.y);
+    vec3 irradiance = coneIrradiance(origin, n, turn, rise, coneClass, classes, voxel.trace.y);
     outIndirect = vec4(irradiance, viewDepth);
     if (traceSpecularCone()) {
         vec3 v = normalize(frame.cameraPosition.xyz - vin.position);

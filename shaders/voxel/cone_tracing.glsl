@@ -357,21 +357,24 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
 // E_ind (W/m^2) on the side of a surface facing n, from the cones of voxel.cones (ConeSet.h)
 // starting at origin (a voxel off the surface): one along n and the rings around it, each ring
 // turned by `turn` (a fraction of its spacing) and ring k by a further k halves of it, so the
-// rings interlace. Pixel class c of `classes` traces ring cones c, c + classes, ... weighted
+// rings interlace, and moved by `rise` (0..1, 0.5 = the ring's own elevation) up to its reach
+// within its band. Pixel class c of `classes` traces ring cones c, c + classes, ... weighted
 // x classes (the filter merges the classes); class 0 of 1 traces them all.
-vec3 coneIrradiance(vec3 origin, vec3 n, float turn, int coneClass, int classes,
+vec3 coneIrradiance(vec3 origin, vec3 n, float turn, float rise, int coneClass, int classes,
                     float maxDistance) {
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t);
     float tanHalf = voxel.trace.x;
     vec3 e = voxel.cones.x * traceCone(origin, n, maxDistance, tanHalf);
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 3; ++k) {
         vec4 ring = voxel.coneRings[k];
         int count = int(ring.x);
-        float spacing = 2.0 * PI / ring.x;
+        float sine2 = clamp(ring.y + (2.0 * rise - 1.0) * ring.z, 0.0, 1.0);
+        float sine = sqrt(sine2), cosine = sqrt(1.0 - sine2);
+        float spacing = 2.0 * PI / max(ring.x, 1.0);
         for (int i = coneClass; i < count; i += classes) {
             float phi = (float(i) + 0.5 * float(k) + turn) * spacing;
-            vec3 dir = ring.y * n + ring.z * (cos(phi) * t + sin(phi) * b);
+            vec3 dir = cosine * n + sine * (cos(phi) * t + sin(phi) * b);
             e += ring.w * float(classes) * traceCone(origin, dir, maxDistance, tanHalf);
         }
     }

@@ -123,7 +123,8 @@ void addVplSweep(std::vector<BenchConfiguration>& list, bool full) {
 
 std::vector<SettingChange> voxelQualityPreset() {
     return {{"voxel.resolution", "64"}, {"voxel.trace_scale", "1"},
-            {"voxel.inject_resolution", "256"}};
+            {"voxel.inject_resolution", "256"}, {"voxel.cones", "37"},
+            {"voxel.jitter_elevation", "1"}};
 }
 
 float shortMaxDistance(float sceneDiagonal) {
@@ -207,7 +208,7 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     std::vector<SettingChange> quality = voxelQualityPreset();
     quality.insert(quality.begin() + 1, {"voxel.cascades", "4"});
     quality.push_back({"voxel.coverage_max_axis", "1"});
-    list.push_back(voxel("preset quality (v64 l4 trace 1, max-axis, inject 4v)", quality,
+    list.push_back(voxel("preset quality (v64 l4 trace 1, max-axis, inject 4v, 37 cones)", quality,
             1.0, 2.0));
 
     list.push_back(atlasBase);

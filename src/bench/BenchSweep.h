@@ -73,8 +73,9 @@ struct SweepOptions {
 [[nodiscard]] bool applyConfiguration(const BenchConfiguration& configuration, Settings& settings,
         std::string& error);
 
-// The voxel quality preset, under any plan: v=64, full-resolution trace, injection at 4v
-// (the accuracy suite's; the bench's "preset quality" row adds four levels of the fixed plan).
+// The voxel quality preset, under any plan: v=64, full-resolution trace, injection at 4v, 37
+// cones moved in elevation by the dither (the accuracy suite's; the bench's "preset quality"
+// row adds four levels of the fixed plan).
 [[nodiscard]] std::vector<SettingChange> voxelQualityPreset();
 
 // The "short" voxel.max_distance for a scene: a quarter of its bounding-box diagonal, rounded

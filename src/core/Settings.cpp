@@ -261,9 +261,9 @@ const std::vector<SettingSpec>& settingSpecs() {
         choiceSetting("voxel.cones",
                 "diffuse cones per surface point: 9 (the thesis: one on the normal, eight at 50 "
                 "degrees), 19 (one on the normal, 6 at 27 and 12 at 56 degrees, each 1/19 of "
-                "the cosine-weighted hemisphere), or the plan's (19 on the adaptive plan, 9 on "
-                "the fixed)",
-                {"plan", "9", "19"}, [](Settings& s) -> int& { return s.voxel.cones; }),
+                "the cosine-weighted hemisphere), 37 (three rings of 6, 12 and 18, each 1/37: "
+                "the quality preset's), or the plan's (19 on the adaptive plan, 9 on the fixed)",
+                {"plan", "9", "19", "37"}, [](Settings& s) -> int& { return s.voxel.cones; }),
         boolSetting("voxel.cone_interleave",
                 "with 19 cones, neighbouring pixels trace alternate halves of the cone rings and "
                 "the filter merges them (10 cones per pixel, about half the trace); needs "
@@ -297,6 +297,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "within voxel.filter's window (none where the window is 3x3; 4x4 pixels without "
                 "the filter)",
                 [](Settings& s) -> bool& { return s.voxel.jitter; }),
+        boolSetting("voxel.jitter_elevation",
+                "with voxel.jitter, the same dither also moves each ring's cones up and down "
+                "within the part of the hemisphere the ring stands for (the quality preset's)",
+                [](Settings& s) -> bool& { return s.voxel.jitterElevation; }),
         intSetting("voxel.filter",
                 "edge-aware smoothing radius of the traced result (texels at voxel.trace_scale=0.5, "
                 "scaled with the trace scale)", 0, 4,

@@ -36,8 +36,14 @@ struct LineSpaceSettings {
 // not the shaded sides of whatever else its texels hold (accuracy-analysis.md).
 enum LightRead : int { LIGHT_READ_CONE = 0, LIGHT_READ_SURFACE = 1 };
 // voxel.cones: the diffuse cones each surface point traces (gi/voxel/ConeSet.h); PLAN is
-// resolved by render::applyPlan (19 on the adaptive plan, the thesis' 9 on the fixed).
-enum VoxelCones : int { VOXEL_CONES_PLAN = 0, VOXEL_CONES_THESIS = 1, VOXEL_CONES_RINGS = 2 };
+// resolved by render::applyPlan (19 on the adaptive plan, the thesis' 9 on the fixed); DENSE
+// is the quality preset's 37.
+enum VoxelCones : int {
+    VOXEL_CONES_PLAN = 0,
+    VOXEL_CONES_THESIS = 1,
+    VOXEL_CONES_RINGS = 2,
+    VOXEL_CONES_DENSE = 3
+};
 
 // Voxel cone tracing (SEEDS.md section 1); defaults are the thesis' reference settings.
 struct VoxelSettings {
@@ -101,6 +107,8 @@ struct VoxelSettings {
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
     bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (RingDither.h)
+    bool jitterElevation = false; // voxel.jitter_elevation: the same dither moves each ring's
+                                  // cones within its band (ConeSet.h)
     int filterRadius = 2;         // voxel.filter: edge-aware smoothing radius, texels of a
                                   // trace at scale 0.5 (scaled with voxel.trace_scale)
     int debugLevel = 0;           // voxel.debug_level: cascade level shown by debug views

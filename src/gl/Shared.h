@@ -17,7 +17,7 @@ static_assert(sizeof(gi::shader::GpuLight) == 64, "GpuLight std430 layout drifte
 static_assert(sizeof(gi::shader::GpuEmitter) == 64, "GpuEmitter std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuMaterial) == 64, "GpuMaterial std430 layout drifted");
 static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
-static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 9,
+static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 10,
         "VoxelUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::AtlasUniforms) == 4 * 16, "AtlasUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuVpl) == 3 * 16, "GpuVpl std430 layout drifted");

@@ -40,7 +40,8 @@ TEST(ConeSet, NineteenEqualSharesTileTheHemisphere) {
     EXPECT_EQ(set.rings[0].count, 6);
     EXPECT_EQ(set.rings[1].count, 12);
     EXPECT_NEAR(set.centralWeight, 1.0f / 19.0f, 1e-6f);
-    for (const voxel::ConeRing& ring : set.rings) EXPECT_NEAR(ring.weight, 1.0f / 19.0f, 1e-6f);
+    EXPECT_EQ(set.rings[2].count, 0);
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(set.rings[k].weight, 1.0f / 19.0f, 1e-6f);
     EXPECT_NEAR(set.totalWeight(), 1.0f, 1e-6f);
     // Ring k at the middle (in sin^2 theta) of its band: 4/19 and 13/19.
     EXPECT_NEAR(std::pow(std::sin(set.rings[0].elevation), 2.0f), 4.0f / 19.0f, 1e-5f);
@@ -52,7 +53,53 @@ TEST(ConeSet, NineteenEqualSharesTileTheHemisphere) {
     EXPECT_EQ(set.conesPerPixel(1), 19);
 }
 
-TEST(ConeSet, BothSetsCentreTheirConesOnTheCosineWeightedMean) {
+TEST(ConeSet, ThirtySevenEqualSharesTileTheHemisphereInThreeRings) {
+    const ConeSet set = coneSet(VOXEL_CONES_DENSE, 0.0f);
+    EXPECT_EQ(set.rings[0].count, 6);
+    EXPECT_EQ(set.rings[1].count, 12);
+    EXPECT_EQ(set.rings[2].count, 18);
+    EXPECT_NEAR(set.centralWeight, 1.0f / 37.0f, 1e-6f);
+    for (const voxel::ConeRing& ring : set.rings) EXPECT_NEAR(ring.weight, 1.0f / 37.0f, 1e-6f);
+    EXPECT_NEAR(set.totalWeight(), 1.0f, 1e-6f);
+    // Bands 1-7, 7-19 and 19-37 of 37 shares; each ring at its band's middle.
+    EXPECT_NEAR(set.rings[2].bandLow, 19.0f / 37.0f, 1e-6f);
+    EXPECT_NEAR(set.rings[2].bandHigh, 1.0f, 1e-6f);
+    EXPECT_NEAR(std::pow(std::sin(set.rings[2].elevation), 2.0f), 28.0f / 37.0f, 1e-5f);
+    const float half = set.apertureDegrees * 0.5f * 3.14159265f / 180.0f;
+    EXPECT_NEAR(37.0f * (1.0f - std::cos(half)), 1.0f, 1e-4f);
+    EXPECT_EQ(set.conesPerPixel(1), 37);
+    EXPECT_EQ(set.conesPerPixel(2), 19);
+}
+
+// voxel.jitter_elevation moves a ring's cones by up to riseReach in sin^2 theta either way:
+// they stay within the ring's band, and the outer ring's rims stay above the surface.
+TEST(ConeSet, ElevationJitterStaysInTheBandAndAboveTheSurface) {
+    for (const int cones : {VOXEL_CONES_THESIS, VOXEL_CONES_RINGS, VOXEL_CONES_DENSE}) {
+        for (const float aperture : {0.0f, 30.0f, 60.0f}) {
+            const ConeSet set = coneSet(cones, aperture);
+            const float half = set.apertureDegrees * 0.5f * 3.14159265f / 180.0f;
+            const float rim = std::cos(half) * std::cos(half);
+            for (const voxel::ConeRing& ring : set.rings) {
+                if (ring.count == 0) continue;
+                const float middle = std::pow(std::sin(ring.elevation), 2.0f);
+                EXPECT_GE(ring.riseReach, 0.0f);
+                EXPECT_GE(middle - ring.riseReach, ring.bandLow - 1e-6f);
+                EXPECT_LE(middle + ring.riseReach, ring.bandHigh + 1e-6f);
+                // A ring whose rims already dip below the surface (wide apertures) stays put.
+                if (middle >= rim) EXPECT_EQ(ring.riseReach, 0.0f);
+                else EXPECT_LE(middle + ring.riseReach, rim + 1e-6f);
+            }
+        }
+    }
+    // 19 cones: the inner ring sweeps its whole band, the outer one until its rim meets the
+    // surface (cos^2 of its half-aperture, cos = 1 - 1/19).
+    const ConeSet nineteen = coneSet(VOXEL_CONES_RINGS, 0.0f);
+    EXPECT_NEAR(nineteen.rings[0].riseReach, 3.0f / 19.0f, 1e-5f);
+    EXPECT_NEAR(nineteen.rings[1].riseReach, std::pow(18.0f / 19.0f, 2.0f) - 13.0f / 19.0f, 1e-5f);
+}
+
+TEST(ConeSet, EverySetCentresItsConesOnTheCosineWeightedMean) {
+    EXPECT_NEAR(meanCosine(coneSet(VOXEL_CONES_DENSE, 0.0f)), 2.0f / 3.0f, 0.02f);
     EXPECT_NEAR(meanCosine(coneSet(VOXEL_CONES_RINGS, 0.0f)), 2.0f / 3.0f, 0.03f);
     EXPECT_NEAR(meanCosine(coneSet(VOXEL_CONES_THESIS, 0.0f)), 2.0f / 3.0f, 0.05f);
 }

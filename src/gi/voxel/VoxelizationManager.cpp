@@ -136,11 +136,12 @@ void VoxelizationManager::writeUniforms() {
     u.smoothing = glm::vec4(float(filterRadius), dither, std::log2(mSettings.footprint),
             mSettings.coneOffset);
     const int classes = conePixelClasses(mSettings.cones, mSettings.coneInterleave, filterRadius);
-    u.cones = glm::vec4(cones.centralWeight, float(classes), 0.0f, 0.0f);
+    u.cones = glm::vec4(cones.centralWeight, float(classes),
+            mSettings.jitter && mSettings.jitterElevation ? 1.0f : 0.0f, 0.0f);
     for (std::size_t k = 0; k < cones.rings.size(); ++k) {
         const ConeRing& ring = cones.rings[k];
-        u.coneRings[k] = glm::vec4(float(ring.count), std::cos(ring.elevation),
-                std::sin(ring.elevation), ring.weight);
+        const float sine = std::sin(ring.elevation);
+        u.coneRings[k] = glm::vec4(float(ring.count), sine * sine, ring.riseReach, ring.weight);
     }
     // One raster over the coarsest level, or one per level over its own extent
     // (voxelize.geom); either way a pixel is 1/multiplier of the rasterized level's voxel.
