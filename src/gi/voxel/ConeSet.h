@@ -6,8 +6,8 @@
 //   apertures; the central cone takes the cap up to halfway to the ring (sin^2 25 degrees =
 //   0.18), each ring cone an eighth of the rest.
 // - 37 cones, the quality preset's: 6, 12 and 18 in three rings of equal shares, 26.6-degree
-//   apertures. Twice the trace of 19; on voxels finer than the default's it pays
-//   (accuracy-analysis.md), on the default's it does less.
+//   apertures. More accurate than 19 on every Cornell box but the open front's energy, at
+//   twice the trace, so only the quality preset traces them (accuracy-analysis.md).
 // - 19 cones, the adaptive plan's (the default): 6 and 12 in two rings, every cone 1/19 of the
 //   cosine-weighted hemisphere (bands of equal sin^2 theta), each ring at its band's middle,
 //   apertures of 37.3 degrees (a cap of 1/19 of the hemisphere's solid angle): the cones tile
