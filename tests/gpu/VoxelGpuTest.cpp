@@ -253,6 +253,61 @@ TEST_F(VoxelGpuTest, PlaneUnderDirectionalLightHasAnalyticIrradiance) {
     }
 }
 
+// A plane tilted against the grid crosses many voxels only partly. Each of them must read
+// the plane's irradiance (the stored irradiance, premultiplied by coverage, over coverage),
+// so that a cone, which takes coverage x rho E from it, receives the flux the plane got
+// there: no more, no less. inject_finalize.comp stores the summed flux (per face area) of a
+// voxel covered less than a face as it is, which is E x coverage; dividing it by the voxel's
+// area as well read 1.7 E over these voxels (measured).
+TEST_F(VoxelGpuTest, PartlyCoveredVoxelsOfATiltedPlaneReadItsIrradiance) {
+    scene::Scene scene = sunlitGreyPlane({0.2f, 0.4f, 0.1f});
+    scene.primitives.clear();
+    scene.instances.clear();
+    scene.bounds = {};
+    scene::Primitive plane = horizontalSquare(1.0f, 0.0f);
+    const float tilt = 0.45f;   // radians about z: the plane's normal is (-sin, cos, 0)
+    const glm::vec3 normal(-std::sin(tilt), std::cos(tilt), 0.0f);
+    for (glm::vec3& p : plane.positions) {
+        p = glm::vec3(p.x * std::cos(tilt), p.x * std::sin(tilt) + 0.013f, p.z);
+    }
+    for (glm::vec3& n : plane.normals) n = normal;
+    addPrimitive(scene, std::move(plane));
+    const scene::Light& sun = scene.lights.front();
+    const float expectedE = sun.intensity * glm::dot(normal, -sun.direction);
+    ASSERT_GT(expectedE, 0.0f);
+
+    // The default plan, each level voxelized over its own extent (as the sunlit floor below):
+    // every level's voxels get the same raster samples, so their areas are measured alike.
+    Settings settings;
+    settings.voxel.rasterPerLevel = true;
+    VoxelFrame frame(scene, settings, {32, 32});
+    const voxel::CascadeVolume& volume = frame.manager().volume();
+    const auto albedo = readVolume(frame.manager().textures().albedo, volume);
+    const auto irradiance = readVolume(frame.manager().textures().irradiance, volume);
+    const int v = volume.resolution();
+    double sum = 0.0;
+    int partly = 0;
+    for (int level = 0; level < volume.levels(); ++level)
+        for (int z = 0; z < v; ++z)
+            for (int y = 0; y < v; ++y)
+                for (int x = 0; x < v; ++x) {
+                    // Voxels written directly and away from the plane's edges, as above.
+                    const glm::vec3 centre = volume.voxelCenter({x, y, z}, level);
+                    if (volume.finestLevelContaining(centre) != level) continue;
+                    const float margin = 0.9f - volume.voxelSize(level);
+                    if (std::abs(centre.x) > margin || std::abs(centre.z) > margin) continue;
+                    const std::size_t i = texelIndex(volume, {x, y, z}, level);
+                    const float coverage = albedo[i].a;
+                    if (coverage < 0.3f || coverage > 0.9f) continue;
+                    sum += irradiance[i].r / coverage / frame.exposure();
+                    ++partly;
+                }
+    ASSERT_GT(partly, 50) << "the tilted plane should cross many voxels partly";
+    std::printf("partly covered voxels %d, mean E %.4f of %.4f\n", partly, sum / partly,
+            double(expectedE));
+    EXPECT_NEAR(sum / partly, expectedE, 0.05 * expectedE);
+}
+
 // The default (adaptive) plan injects through light views fine enough for its finest voxels:
 // every finest-level voxel inside a sunlit floor holds the floor's irradiance. With the
 // thesis' v light pixels over the scene, each pixel (6 cm here) covered about 14 x 14 of the
