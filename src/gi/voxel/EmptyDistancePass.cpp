@@ -12,8 +12,6 @@ bool EmptyDistancePass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 void EmptyDistancePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
     const VoxelTextures& t = out.textures;
-    // Anisotropic voxels' walk never leaps (cone_tracing.glsl).
-    if (t.anisotropic) return;
     gl::GpuScope scope(profiler, "voxel/empty_distance");
     // Waits for the passes before it: with a memory barrier alone llvmpipe let it read the
     // normals while voxelization was still writing them (the image changed from run to run).

@@ -32,8 +32,7 @@ void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces)
     lock = createVolume(GL_R32UI, size, "voxel/lock");
     gathered = bounces ? createVolume(GL_RGBA16F, size, "voxel/gathered") : gl::Texture();
     for (gl::Texture& scratch : distanceScratch) {
-        scratch = anisotropic ? gl::Texture()
-                              : createVolume(GL_R8UI, glm::ivec3(v), "voxel/distance_scratch");
+        scratch = createVolume(GL_R8UI, glm::ivec3(v), "voxel/distance_scratch");
     }
     const int faces = facesOf(anisotropic);
     directional = anisotropic
@@ -72,10 +71,7 @@ std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotro
             {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2},
                     gl::fullMipCount(v / 2))}};
     if (bounces) items.push_back({"voxel/gathered", gl::textureBytes(GL_RGBA16F, size, 1)});
-    if (!anisotropicVoxels) {
-        items.push_back({"voxel/distance_scratch",
-                2 * gl::textureBytes(GL_R8UI, glm::ivec3(v), 1)});
-    }
+    items.push_back({"voxel/distance_scratch", 2 * gl::textureBytes(GL_R8UI, glm::ivec3(v), 1)});
     if (anisotropicVoxels) {
         items.push_back({"voxel/directional",
                 gl::textureBytes(GL_RGBA16F, {v * faces, v, v * l}, 1)});

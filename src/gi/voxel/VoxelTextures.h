@@ -4,7 +4,7 @@
 // 32 bytes per voxel: 3.15 MB at v=32, l=3, under the thesis' 3.46 MB for the same data.
 // Beyond the thesis, a mipmapped RGBA16F pyramid of the coarsest level, (v/2)^3 at mip 0,
 // holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB);
-// isotropic voxels add two scratch bytes per coarsest voxel for EmptyDistancePass (64 KB).
+// two scratch bytes per coarsest voxel serve EmptyDistancePass (64 KB).
 // With voxel.anisotropic a directional copy of the cascade holds each voxel as seen from each
 // of its 6 faces (RGBA16F, 48 more bytes per voxel: 4.72 MB at v=32, l=3) and the pyramid
 // holds 6 faces too (DirectionalVoxelsPass.h). With gi.bounces > 1 one more RGBA16F volume
@@ -28,8 +28,8 @@ struct VoxelTextures {
     gl::Texture pyramid;      // mip m: coarsest level averaged over 2^(m+1) voxels per axis,
                               // rgb = rho E x coverage (W/m^2), a = coverage; anisotropic:
                               // 6 x-slabs, one per face, as `directional`
-    gl::Texture distanceScratch[2];   // isotropic only, R8UI (v^3): the empty-distance pass'
-                                      // distances along x, then over x and y
+    gl::Texture distanceScratch[2];   // R8UI (v^3): the empty-distance pass' distances along
+                                      // x, then over x and y
     gl::Texture directional;  // anisotropic only, (6v, v, v*l): x-slab f = the voxel seen from
                               // face f (VOXEL_FACE_*), rgb = rho E x a, a = facing coverage
     gl::Texture gathered;     // gi.bounces > 1 only: rgb = the indirect E x coverage the voxel
