@@ -230,12 +230,16 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
     bool dynamic = false;
     for (const scene::Instance& instance : scene.instances) dynamic |= instance.dynamic;
     if (dynamic && settings.voxel.cache) {
-        // StaticVoxelCache: albedo, normal, irradiance, lock copies.
-        const glm::ivec3 size(plan.voxel.resolution, plan.voxel.resolution,
-                plan.voxel.resolution * plan.voxel.levels);
+        // StaticVoxelCache: albedo, normal, irradiance, lock copies (and the directional one).
+        const int v = plan.voxel.resolution;
+        const glm::ivec3 size(v, v, v * plan.voxel.levels);
+        const std::size_t directional = settings.voxel.anisotropic
+                ? gl::textureBytes(GL_RGBA16F, {v * VOXEL_FACES, v, v * plan.voxel.levels}, 1)
+                : 0;
         plan.voxelMemory.push_back({"voxel/static", gl::textureBytes(GL_RGBA16F, size, 1) * 2 +
                                                             gl::textureBytes(GL_RGBA8_SNORM, size, 1) +
-                                                            gl::textureBytes(GL_R32UI, size, 1)});
+                                                            gl::textureBytes(GL_R32UI, size, 1) +
+                                                            directional});
     }
     // The 19 cones read the voxels at finer mips than the thesis' 9: on the fixed plan's coarse
     // voxels (9 cm in the Cornell box) that scores worse (relative RMSE 0.51 -> 0.61,

@@ -123,31 +123,41 @@ TEST_F(StaticCachingGpuTest, CascadeIsRedoneWhenItsPlacementMovesAndLightsChange
     EXPECT_NEAR(mean(lit) / mean(moved), 2.0, 0.04);
 }
 
+// Isotropic and anisotropic voxels alike: the cache keeps the anisotropic voxels' directional
+// copy too (before, anisotropic voxels revoxelized the whole scene every frame the cube moved).
 TEST_F(StaticCachingGpuTest, AnimatedCubeIsRevoxelizedOnTopOfTheKeptStaticPart) {
-    scene::Scene moving = loadTestScene("assets/cornell_box/cornell_box_animated.gltf");
-    const scene::CameraView camera = cameraOf(moving);
-    Renderer cached(moving, withCache(true)), full(moving, withCache(false));
-    double worst = 0.0;
-    for (const double seconds : {0.0, 0.5, 1.0, 2.0}) {
-        scene::poseScene(moving, seconds);
-        cached.renderer().setPose(moving);
-        full.renderer().setPose(moving);
-        const core::Image a = cached.frame(camera, render::OutputComponent::Final);
-        const core::Image b = full.frame(camera, render::OutputComponent::Final);
-        worst = std::max(worst, relativeDifference(a, b));
-    }
-    EXPECT_EQ(cached.reused(), 0u) << "moving geometry is voxelized and lit every frame";
-    EXPECT_LT(worst, 0.01) << "worst mean relative difference over the poses";
-    // Paused: the cube did not move since the last frame, so nothing is redone.
-    (void)cached.frame(camera, render::OutputComponent::Final);
-    EXPECT_EQ(cached.reused(), 1u) << "a paused animation is a static scene";
-    bool hasStaticCopy = false;
-    for (const gl::MemoryItem& item : cached.renderer().memory()) {
-        hasStaticCopy |= item.name.rfind("voxel/static/", 0) == 0;
-    }
-    EXPECT_TRUE(hasStaticCopy);
-    for (const gl::MemoryItem& item : full.renderer().memory()) {
-        EXPECT_NE(item.name.rfind("voxel/static/", 0), 0u) << item.name << " without voxel.cache";
+    for (const bool anisotropic : {false, true}) {
+        SCOPED_TRACE(anisotropic ? "anisotropic voxels" : "isotropic voxels");
+        scene::Scene moving = loadTestScene("assets/cornell_box/cornell_box_animated.gltf");
+        const scene::CameraView camera = cameraOf(moving);
+        Settings withStatic = withCache(true), redoAll = withCache(false);
+        withStatic.voxel.anisotropic = redoAll.voxel.anisotropic = anisotropic;
+        Renderer cached(moving, withStatic), full(moving, redoAll);
+        double worst = 0.0;
+        for (const double seconds : {0.0, 0.5, 1.0, 2.0}) {
+            scene::poseScene(moving, seconds);
+            cached.renderer().setPose(moving);
+            full.renderer().setPose(moving);
+            const core::Image a = cached.frame(camera, render::OutputComponent::Final);
+            const core::Image b = full.frame(camera, render::OutputComponent::Final);
+            worst = std::max(worst, relativeDifference(a, b));
+        }
+        EXPECT_EQ(cached.reused(), 0u) << "moving geometry is voxelized and lit every frame";
+        EXPECT_LT(worst, 0.01) << "worst mean relative difference over the poses";
+        // Paused: the cube did not move since the last frame, so nothing is redone.
+        (void)cached.frame(camera, render::OutputComponent::Final);
+        EXPECT_EQ(cached.reused(), 1u) << "a paused animation is a static scene";
+        std::size_t staticBytes = 0, directionalBytes = 0;
+        for (const gl::MemoryItem& item : cached.renderer().memory()) {
+            if (item.name.rfind("voxel/static/", 0) == 0) staticBytes += item.bytes;
+            if (item.name == "voxel/static/directional") directionalBytes += item.bytes;
+        }
+        EXPECT_GT(staticBytes, 0u);
+        EXPECT_EQ(directionalBytes > 0, anisotropic) << "the directional copy, kept only for "
+                                                        "anisotropic voxels";
+        for (const gl::MemoryItem& item : full.renderer().memory()) {
+            EXPECT_NE(item.name.rfind("voxel/static/", 0), 0u) << item.name << " without voxel.cache";
+        }
     }
 }
 

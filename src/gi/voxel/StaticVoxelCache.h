@@ -3,8 +3,9 @@
 // placement of the cascade and saved here; every frame restores it and voxelizes only the
 // dynamic instances on top, before light injection. A copy holds what voxelization writes and
 // injection later changes: albedo, normal, the area sum in irradiance.a and the fragment
-// counts in the lock (so the dynamic fragments continue the same running averages).
-// 24 bytes per voxel, allocated only for scenes with dynamic geometry.
+// counts in the lock (so the dynamic fragments continue the same running averages), and with
+// anisotropic voxels the per-face area sums of the directional copy.
+// 24 bytes per voxel (72 anisotropic), allocated only for scenes with dynamic geometry.
 #pragma once
 
 #include "gi/voxel/VoxelTextures.h"
@@ -24,8 +25,9 @@ public:
     [[nodiscard]] bool allocated() const { return bool(mAlbedo); }
 
 private:
-    gl::Texture mAlbedo, mNormal, mIrradiance, mLock;
+    gl::Texture mAlbedo, mNormal, mIrradiance, mLock, mDirectional;
     int mResolution = 0, mLevels = 0;
+    bool mAnisotropic = false;
 };
 
 } // namespace gi::voxel

@@ -211,9 +211,7 @@ void VoxelizationManager::rememberContent(const GiFrameInputs& in, Content conte
 void VoxelizationManager::voxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     using DrawSet = scene::GpuScene::DrawSet;
     const int rasterSize = mSettings.resolution * mSettings.multiplier;
-    // The static cache keeps the isotropic textures only: anisotropic voxels revoxelize all.
-    const bool split = mSettings.cache && !mSettings.anisotropic &&
-                       in.scene.hasDynamicGeometry();
+    const bool split = mSettings.cache && in.scene.hasDynamicGeometry();
     if (!split) mStaticCache.release();
     if (split && mStaticCacheValid) {
         gl::GpuScope scope(profiler, "voxel/restore-static");
