@@ -205,6 +205,26 @@ float sunlitPlaneIrradiance(const scene::Scene& scene) {
     return sun.intensity * -sun.direction.y;
 }
 
+// Calls visit(texel index) for every voxel that voxelization wrote directly (the finest level
+// holding its centre: propagation, which dilutes by coverage, wrote the others) whose centre
+// lies within half - one voxel size of the origin in x and in z: a voxel away from the edges of
+// a plane of that half-size, whose area, counted from raster pixel centres, would be off by up
+// to half a pixel along an edge.
+template <typename Visit>
+void forEachDirectVoxelInside(const voxel::CascadeVolume& volume, float half, Visit visit) {
+    const int v = volume.resolution();
+    for (int level = 0; level < volume.levels(); ++level)
+        for (int z = 0; z < v; ++z)
+            for (int y = 0; y < v; ++y)
+                for (int x = 0; x < v; ++x) {
+                    const glm::vec3 centre = volume.voxelCenter({x, y, z}, level);
+                    if (volume.finestLevelContaining(centre) != level) continue;
+                    const float margin = half - volume.voxelSize(level);
+                    if (std::abs(centre.x) > margin || std::abs(centre.z) > margin) continue;
+                    visit(texelIndex(volume, {x, y, z}, level));
+                }
+}
+
 // Under a directional light a plane has the same irradiance E = I cos(theta) everywhere.
 // The thesis' fragment mean reads it exactly (half-float precision: 0.1%); the flux/area
 // injection matches it on average (flux is conserved) and per voxel to within the share of
@@ -224,26 +244,14 @@ TEST_F(VoxelGpuTest, PlaneUnderDirectionalLightHasAnalyticIrradiance) {
         double sum = 0.0;
         int count = 0;
         float worst = 0.0f;
-        const int v = volume.resolution();
-        for (int level = 0; level < volume.levels(); ++level)
-        for (int z = 0; z < v; ++z)
-            for (int y = 0; y < v; ++y)
-                for (int x = 0; x < v; ++x) {
-                    // Voxels written directly (not by propagation, which dilutes by coverage) and
-                    // whole inside the plane: a border voxel's area comes from counting raster
-                    // pixel centres, which is off by up to half a pixel along the edge.
-                    const glm::vec3 centre = volume.voxelCenter({x, y, z}, level);
-                    if (volume.finestLevelContaining(centre) != level) continue;
-                    const float margin = 1.0f - volume.voxelSize(level);
-                    if (std::abs(centre.x) > margin || std::abs(centre.z) > margin) continue;
-                    const std::size_t i = texelIndex(volume, {x, y, z}, level);
-                    if (albedo[i].a <= 0.0f) continue;
-                    EXPECT_NEAR(albedo[i].r, 0.5f, 0.001f);
-                    const float e = irradiance[i].r / frame.exposure();
-                    sum += e;
-                    worst = std::max(worst, std::abs(e - expectedE) / expectedE);
-                    ++count;
-                }
+        forEachDirectVoxelInside(volume, 1.0f, [&](std::size_t i) {
+            if (albedo[i].a <= 0.0f) return;
+            EXPECT_NEAR(albedo[i].r, 0.5f, 0.001f);
+            const float e = irradiance[i].r / frame.exposure();
+            sum += e;
+            worst = std::max(worst, std::abs(e - expectedE) / expectedE);
+            ++count;
+        });
         ASSERT_GT(count, 50) << "the plane should cross the cascade";
         EXPECT_NEAR(sum / count, expectedE, 0.01 * expectedE) << "mean over the plane, fragmentMean="
                                                             << fragmentMean;
@@ -284,24 +292,15 @@ TEST_F(VoxelGpuTest, PartlyCoveredVoxelsOfATiltedPlaneReadItsIrradiance) {
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(frame.manager().textures().albedo, volume);
     const auto irradiance = readVolume(frame.manager().textures().irradiance, volume);
-    const int v = volume.resolution();
     double sum = 0.0;
     int partly = 0;
-    for (int level = 0; level < volume.levels(); ++level)
-        for (int z = 0; z < v; ++z)
-            for (int y = 0; y < v; ++y)
-                for (int x = 0; x < v; ++x) {
-                    // Voxels written directly and away from the plane's edges, as above.
-                    const glm::vec3 centre = volume.voxelCenter({x, y, z}, level);
-                    if (volume.finestLevelContaining(centre) != level) continue;
-                    const float margin = 0.9f - volume.voxelSize(level);
-                    if (std::abs(centre.x) > margin || std::abs(centre.z) > margin) continue;
-                    const std::size_t i = texelIndex(volume, {x, y, z}, level);
-                    const float coverage = albedo[i].a;
-                    if (coverage < 0.3f || coverage > 0.9f) continue;
-                    sum += irradiance[i].r / coverage / frame.exposure();
-                    ++partly;
-                }
+    // The tilted plane reaches 0.9 m along x.
+    forEachDirectVoxelInside(volume, 0.9f, [&](std::size_t i) {
+        const float coverage = albedo[i].a;
+        if (coverage < 0.3f || coverage > 0.9f) return;
+        sum += irradiance[i].r / coverage / frame.exposure();
+        ++partly;
+    });
     ASSERT_GT(partly, 50) << "the tilted plane should cross many voxels partly";
     std::printf("partly covered voxels %d, mean E %.4f of %.4f\n", partly, sum / partly,
             double(expectedE));
