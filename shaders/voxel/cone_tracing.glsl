@@ -57,9 +57,10 @@
 // wall's opacity per mip and let cones through walls.
 //
 // Anisotropic voxels (voxel.anisotropic, voxel_directional.glsl): the light a cone meets is
-// read from the three faces the cone sees, weighted by its direction's squared components
-// (which sum to 1), from the directional voxels and the directional pyramid, and a voxel
-// faces away when none of those faces holds a surface facing the cone. Opacity stays the
+// read from the faces the cone sees, each weighted by the area it shows the cone: along the
+// cone's axis (three faces) from the directional voxels, and over the cone's directions (all
+// six once it is wide) from the directional pyramid; a voxel faces away when none of those
+// faces holds a surface facing the cone. Opacity stays the
 // isotropic coverage (directional_build.comp says why).
 #ifndef GI_VOXEL_CONE_TRACING_GLSL
 #define GI_VOXEL_CONE_TRACING_GLSL
@@ -107,10 +108,10 @@ bool anisotropicVoxels() { return voxel.grid.z != 0; }
 #endif
 
 // The directional voxels of `level` around p as a cone travelling along dir sees them:
-// rgb = rho E x a, a = facing coverage.
+// rgb = rho E x a, a = facing coverage, each face weighted by the area it shows along dir.
 vec4 readDirectional(vec3 p, int level, vec3 dir) {
     vec3 tc = voxelTexcoord(p, level);
-    vec3 weight = dir * dir;
+    vec3 weight = abs(dir);
     vec4 sum = vec4(0.0);
     for (int axis = 0; axis < 3; ++axis) {
         float face = float(faceSeenAlong(dir, axis));
@@ -120,40 +121,43 @@ vec4 readDirectional(vec3 p, int level, vec3 dir) {
     return sum;
 }
 
-// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3) as seen along
-// dir; each face's read stays half a texel inside its slab so filtering never mixes faces.
-// coarsestLight moves the read half a texel in front of the surface met.
-vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir) {
+// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3) as the directions
+// of a cone along dir of half-angle tangent tanHalf see it (faceWeightsOverCone: all six
+// faces once the cone is wide); each face's read stays half a texel inside its slab so
+// filtering never mixes faces. coarsestLight moves the read half a texel in front of the
+// surface met.
+vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir, float tanHalf) {
     float slab = float(max((voxelResolution() / 2) >> mip, 1));
     vec3 local = clamp(uvw * slab, vec3(0.5), vec3(slab - 0.5));
-    vec3 weight = dir * dir;
+    vec3 towardPositive, towardNegative;
+    faceWeightsOverCone(dir, tanHalf, towardPositive, towardNegative);
     vec4 sum = vec4(0.0);
-    for (int axis = 0; axis < 3; ++axis) {
-        float face = float(faceSeenAlong(dir, axis));
-        vec3 tc = vec3((local.x + face * slab) / (slab * float(VOXEL_FACES)), local.yz / slab);
-        sum += weight[axis] * textureLod(voxelPyramidTexture, tc, float(mip));
+    for (int face = 0; face < VOXEL_FACES; ++face) {
+        // Face 2 axis + 1 is the one directions of positive component see.
+        float weight = (face & 1) != 0 ? towardPositive[face / 2] : towardNegative[face / 2];
+        vec3 tc = vec3((local.x + float(face) * slab) / (slab * float(VOXEL_FACES)),
+                local.yz / slab);
+        sum += weight * textureLod(voxelPyramidTexture, tc, float(mip));
     }
     return sum;
 }
 
 // The pyramid at a fractional mip: readDirectionalPyramid's clamp differs per mip, so the two
 // mips are read apart and blended here.
-vec4 pyramidAt(vec3 uvw, float lod, vec3 dir) {
+vec4 pyramidAt(vec3 uvw, float lod, vec3 dir, float tanHalf) {
     if (!anisotropicVoxels()) return textureLod(voxelPyramidTexture, uvw, lod);
     int mip = int(floor(lod));
-    vec4 lower = readDirectionalPyramid(uvw, mip, dir);
+    vec4 lower = readDirectionalPyramid(uvw, mip, dir, tanHalf);
     float blend = lod - float(mip);
-    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, dir), blend) : lower;
+    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, dir, tanHalf), blend)
+                       : lower;
 }
 
-// The direction whose faces the light read takes where a cone along dir meets a surface
-// facing `front`: the cone's own (Crassin et al. 2011), or with voxel.light_read=surface the
-// surface's, so the wide read averages the surfaces facing as the one met does and leaves out
-// the other sides of what its texels hold (a pier's shaded flank beside a sunlit floor). A
-// select, not a branch: llvmpipe would run both sides.
-vec3 lightReadDirection(vec3 dir, vec3 front) {
-    return voxel.grid.z == VOXEL_KIND_ANISOTROPIC_SURFACE_READ ? -front : dir;
-}
+// Whether the light read where a cone meets a surface takes the faces the surface's
+// direction sees (voxel.light_read=surface: the wide read averages the surfaces facing as the
+// one met does and leaves out the other sides of what its texels hold, a pier's shaded flank
+// beside a sunlit floor) instead of those the cone's directions see (Crassin et al. 2011).
+bool surfaceRead() { return voxel.grid.z == VOXEL_KIND_ANISOTROPIC_SURFACE_READ; }
 
 // Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
 // around p on the coarsest level: the filtered voxels while the cone is narrower than they
@@ -162,17 +166,22 @@ vec3 lightReadDirection(vec3 dir, vec3 front) {
 // the cone came from: the pyramid is read half a texel that way, so its trilinear kernel
 // (two texels wide) lies mostly in front of the surface. Centred on the surface, half the
 // kernel lay behind it and averaged in what the surface hides: the other side of a wall, the
-// shaded back of a pier, the dark outside of a lit room (accuracy-analysis.md).
-vec3 coarsestLight(vec3 p, float diameter, vec3 dir, vec3 front) {
+// shaded back of a pier, the dark outside of a lit room (accuracy-analysis.md). tanHalf is
+// the cone's half-angle tangent: the wide read sees the faces all its directions see. The
+// surface read takes one direction, the one a cone meeting the surface head-on would have.
+// Selects, not branches: llvmpipe would run both sides.
+vec3 coarsestLight(vec3 p, float diameter, vec3 dir, float tanHalf, vec3 front) {
     int coarsest = voxelLevels() - 1;
-    vec3 seen = lightReadDirection(dir, front);
+    vec3 seen = surfaceRead() ? -front : dir;
+    float seenSpread = surfaceRead() ? 0.0 : tanHalf;
     float spread = log2(diameter / levelVoxelSize(coarsest));
     vec4 wide = vec4(0.0);
     if (spread > 0.0) {
         float mip = max(spread + voxel.smoothing.z - 1.0, 0.0);
         if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
         vec3 read = p + front * (0.5 * exp2(mip + 1.0) * levelVoxelSize(coarsest));
-        wide = pyramidAt((read - levelOrigin(coarsest)) / levelExtent(coarsest), mip, seen);
+        wide = pyramidAt((read - levelOrigin(coarsest)) / levelExtent(coarsest), mip, seen,
+                seenSpread);
         if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
     }
     if (anisotropicVoxels()) {
@@ -300,7 +309,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                     : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
             hit = clamp(hit, 0.0, path);
             reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest),
-                    dir, front);
+                    dir, tanHalf, front);
         } else {
             ++steps;
             float path = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *

@@ -47,6 +47,30 @@ int faceSeenAlong(vec3 dir, int axis) {
     return 2 * axis + (dir[axis] > 0.0 ? 1 : 0);
 }
 
+// How much of each face the directions of a cone along `dir` (unit) of half-angle tangent
+// tanHalf see, as the mean projected area a unit face shows them: per axis, towardPositive
+// weighs the face travelling directions of positive component see (faceSeenAlong), toward-
+// Negative the opposite face. A direction d sees a face by |d_axis|; over the cone's cap
+// (uniform in solid angle) the component has mean m = (1 + cos) / 2 dir_axis and second
+// moment e2 dir_axis^2 + (1 - e2)(1 - dir_axis^2) / 2, e2 = (1 + cos + cos^2) / 3, and taken
+// as normal its positive part's mean is m Phi(m / s) + s phi(m / s). A narrow cone gives
+// |dir_axis| to the faces it travels towards; a wide one also the faces beside and behind its
+// axis that its outer directions see (a wall along a corridor a wide cone runs down).
+void faceWeightsOverCone(vec3 dir, float tanHalf, out vec3 towardPositive,
+        out vec3 towardNegative) {
+    float c = inversesqrt(1.0 + tanHalf * tanHalf);
+    float firstMoment = 0.5 * (1.0 + c);
+    float secondMoment = (1.0 + c + c * c) / 3.0;
+    vec3 mean = firstMoment * dir;
+    vec3 square = secondMoment * dir * dir + (1.0 - secondMoment) * (1.0 - dir * dir) * 0.5;
+    vec3 sigma = sqrt(max(square - mean * mean, vec3(1e-8)));
+    vec3 z = clamp(mean / sigma, vec3(-8.0), vec3(8.0));
+    vec3 cdf = 1.0 / (1.0 + exp(-1.702 * z));             // logistic approximation of Phi
+    vec3 pdf = 0.3989423 * exp(-0.5 * z * z);
+    towardPositive = max(mean * cdf + sigma * pdf, vec3(0.0));
+    towardNegative = max(towardPositive - mean, vec3(0.0));
+}
+
 #ifdef VOXEL_DIRECTIONAL_SUMS
 #include "voxel_lock.glsl"
 

@@ -31,9 +31,10 @@ struct LineSpaceSettings {
 };
 
 // voxel.light_read: where a cone meets a surface, the light of anisotropic voxels is read as
-// the cone's direction sees their faces (cone, Crassin et al. 2011) or as the faces of the
-// surface met (surface): the wide read then averages only surfaces facing the way it faces,
-// not the shaded sides of whatever else its texels hold (accuracy-analysis.md).
+// the cone's directions see their faces (cone, after Crassin et al. 2011: each face by the area
+// it shows them) or as the faces of the surface met (surface): the wide read then averages
+// only surfaces facing the way it faces, not the shaded sides of whatever else its texels hold
+// (accuracy-analysis.md).
 enum LightRead : int { LIGHT_READ_CONE = 0, LIGHT_READ_SURFACE = 1 };
 // voxel.cones: the diffuse cones each surface point traces (gi/voxel/ConeSet.h); PLAN is
 // resolved by render::applyPlan (19 on the adaptive plan, the thesis' 9 on the fixed); DENSE
