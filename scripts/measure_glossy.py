@@ -13,6 +13,10 @@ radiance (no diffuse term there, so it is specular light alone). 96x96, render.p
 the path tracer at 1024 spp.
 
 Usage: /usr/bin/python3 scripts/measure_glossy.py [--bin build/voxatlas]
+       /usr/bin/python3 scripts/measure_glossy.py --figures [--set KEY=VALUE ...]
+--figures prints only the two figures gpu.*.GlossyGpuTest.* hold (the metal block's indirect
+light and the indirect specular component, voxel / path tracer), with the default plan and
+the --set settings on the voxel side, and writes nothing.
 """
 import argparse
 import json
@@ -103,11 +107,36 @@ def metrics_row(label, voxel, reference, mask):
             f"| {rmse:.3f} | {TARGET} |")
 
 
+def print_figures(assignments):
+    """The metal block's indirect light and the indirect specular component over the image,
+    voxel with the default plan and `assignments` against the path tracer."""
+    sets = dict(a.split("=", 1) for a in assignments)
+    reference = {model: image("reference", "indirect", settings)
+                 for model, settings in (("glossy", GLOSSY), ("lambert", LAMBERT))}
+    voxel = {model: image("voxel", "indirect", {**settings, "render.plan": "adaptive", **sets})
+             for model, settings in (("glossy", GLOSSY), ("lambert", LAMBERT))}
+    mask = common.reference_mask(reference["glossy"])
+    metal = metal_mask() & mask
+    block = voxel["glossy"][metal].sum() / reference["glossy"][metal].sum()
+    specular = ((voxel["glossy"] - voxel["lambert"])[mask].sum() /
+                (reference["glossy"] - reference["lambert"])[mask].sum())
+    settings_text = " ".join(assignments) or "defaults"
+    print(f"{settings_text}: metal block indirect light x{block:.3f} of the path tracer's "
+          f"({int(metal.sum())} pixels), indirect specular component x{specular:.3f}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     common.add_bin_argument(parser)
+    parser.add_argument("--figures", action="store_true",
+                        help="print the tests' two figures only (see the usage above)")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="a voxel setting for --figures")
     args = parser.parse_args()
     common.use_binary(args.bin)
+    if args.figures:
+        print_figures(args.set)
+        return
 
     renders = {}
     for mode in ("reference", "voxel"):
