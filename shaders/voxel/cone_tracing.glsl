@@ -121,16 +121,13 @@ vec4 readDirectional(vec3 p, int level, vec3 dir) {
     return sum;
 }
 
-// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3) as the directions
-// of a cone along dir of half-angle tangent tanHalf see it (faceWeightsOverCone: all six
-// faces once the cone is wide); each face's read stays half a texel inside its slab so
-// filtering never mixes faces. coarsestLight moves the read half a texel in front of the
-// surface met.
-vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir, float tanHalf) {
+// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3), each face
+// weighted as faceWeightsOverCone weighs it for the cone reading; each face's read stays half
+// a texel inside its slab so filtering never mixes faces. coarsestLight moves the read half a
+// texel in front of the surface met.
+vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 towardPositive, vec3 towardNegative) {
     float slab = float(max((voxelResolution() / 2) >> mip, 1));
     vec3 local = clamp(uvw * slab, vec3(0.5), vec3(slab - 0.5));
-    vec3 towardPositive, towardNegative;
-    faceWeightsOverCone(dir, tanHalf, towardPositive, towardNegative);
     vec4 sum = vec4(0.0);
     for (int face = 0; face < VOXEL_FACES; ++face) {
         // Face 2 axis + 1 is the one directions of positive component see.
@@ -142,14 +139,18 @@ vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 dir, float tanHalf) {
     return sum;
 }
 
-// The pyramid at a fractional mip: readDirectionalPyramid's clamp differs per mip, so the two
-// mips are read apart and blended here.
+// The pyramid at a fractional mip as the directions of a cone along dir of half-angle tangent
+// tanHalf see it (all six faces once the cone is wide): readDirectionalPyramid's clamp differs
+// per mip, so the two mips are read apart, with the same face weights, and blended here.
 vec4 pyramidAt(vec3 uvw, float lod, vec3 dir, float tanHalf) {
     if (!anisotropicVoxels()) return textureLod(voxelPyramidTexture, uvw, lod);
+    vec3 towardPositive, towardNegative;
+    faceWeightsOverCone(dir, tanHalf, towardPositive, towardNegative);
     int mip = int(floor(lod));
-    vec4 lower = readDirectionalPyramid(uvw, mip, dir, tanHalf);
+    vec4 lower = readDirectionalPyramid(uvw, mip, towardPositive, towardNegative);
     float blend = lod - float(mip);
-    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, dir, tanHalf), blend)
+    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, towardPositive,
+                                            towardNegative), blend)
                        : lower;
 }
 
