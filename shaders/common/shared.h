@@ -162,12 +162,14 @@
 #define VOXEL_FACE_NEG_Z            5
 #define VOXEL_FACES                 6
 
-// VoxelUniforms.grid.z: isotropic voxels, or anisotropic ones whose light a cone reads where it
-// meets a surface as its own direction sees their faces (voxel.light_read=cone) or as the
-// faces of the surface met (voxel.light_read=surface).
+// VoxelUniforms.grid.z: isotropic or anisotropic voxels, whose light (the faces of the
+// anisotropic voxels, and of the light pyramid above the coarsest level of either kind) a cone
+// reads where it meets a surface as its own directions see those faces (voxel.light_read=cone)
+// or as the surface met faces (voxel.light_read=surface).
 #define VOXEL_KIND_ISOTROPIC        0
 #define VOXEL_KIND_ANISOTROPIC      1
 #define VOXEL_KIND_ANISOTROPIC_SURFACE_READ 2
+#define VOXEL_KIND_ISOTROPIC_SURFACE_READ   3
 
 #define VOXEL_MAX_LEVELS            8
 #define VOXEL_VISIBILITY_MAX_STEPS  512 // voxels one segment of voxel_visibility.glsl walks at most

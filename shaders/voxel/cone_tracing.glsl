@@ -37,9 +37,13 @@
 // it). The light met there is the
 // reflected light over the cone's footprint: the filtered voxels while the cone is narrower
 // than they are, then the pyramid above the coarsest level (RadiancePyramidPass.h) at the
-// cone's width. voxel.pyramid_mips caps that width: a texel's light is averaged across its
-// whole footprint, so a wide one straddling a wall shows a cone in one room the other room's
-// light (anisotropic texels hide what lies behind along the cone's axis, not beside it).
+// cone's width. The pyramid keeps its light per face for either kind of voxels, and the wide
+// read weighs each face by the area it shows the cone's directions (voxel.light_read=cone) or
+// the surface met (surface): one average of every surface a texel held, by coverage, mixed a
+// sunlit floor with the shaded flanks of the piers standing on it and lost a fifth to a third
+// of the light in sunlit scenes (accuracy-analysis.md). voxel.pyramid_mips caps the width: a
+// texel's light is averaged across its whole footprint, so a wide one straddling a wall shows
+// a cone in one room the other room's light on the faces both rooms' walls show.
 // The pyramid mip is picked for voxel.footprint cone diameters (0.6 by default, the thesis
 // 1): a texel as wide as the cone, read trilinearly, averages a box one texel wide blurred by
 // a tent two texels wide, a kernel of twice the spread (standard deviation) of the cone's
@@ -59,7 +63,7 @@
 // Anisotropic voxels (voxel.anisotropic, voxel_directional.glsl): the light a cone meets is
 // read from the faces the cone sees, each weighted by the area it shows the cone: along the
 // cone's axis (three faces) from the directional voxels, and over the cone's directions (all
-// six once it is wide) from the directional pyramid; a voxel faces away when none of those
+// six once it is wide) from the pyramid, composited per face; a voxel faces away when none of those
 // faces holds a surface facing the cone. Opacity stays the
 // isotropic coverage (directional_build.comp says why).
 #ifndef GI_VOXEL_CONE_TRACING_GLSL
@@ -104,7 +108,7 @@ VoxelSample readLevel(vec3 p, int level) {
 #ifdef VOXEL_SHAPE_ANISOTROPIC
 bool anisotropicVoxels() { return VOXEL_SHAPE_ANISOTROPIC != 0; }
 #else
-bool anisotropicVoxels() { return voxel.grid.z != 0; }
+bool anisotropicVoxels() { return anisotropicKind(); }
 #endif
 
 // The directional voxels of `level` around p as a cone travelling along dir sees them:
@@ -121,34 +125,36 @@ vec4 readDirectional(vec3 p, int level, vec3 dir) {
     return sum;
 }
 
-// One mip of the directional pyramid at uvw (the coarsest level's [0, 1]^3), each face
-// weighted as faceWeightsOverCone weighs it for the cone reading; each face's read stays half
-// a texel inside its slab so filtering never mixes faces. coarsestLight moves the read half a
-// texel in front of the surface met.
+// Slab `slab` of `slabs` (x-slabs of the pyramid's every mip) at uvw (the coarsest level's
+// [0, 1]^3), kept half a texel inside the slab so filtering never mixes slabs.
+vec4 readPyramidSlab(vec3 uvw, int mip, int slab, int slabs) {
+    float side = float(max((voxelResolution() / 2) >> mip, 1));
+    vec3 local = clamp(uvw * side, vec3(0.5), vec3(side - 0.5));
+    vec3 tc = vec3((local.x + float(slab) * side) / (side * float(slabs)), local.yz / side);
+    return textureLod(voxelPyramidTexture, tc, float(mip));
+}
+
+// One mip of the directional pyramid, each face weighted as faceWeightsOverCone weighs it for
+// the cone reading (face 2 axis + 1 is the one directions of positive component see).
+// coarsestLight moves the read half a texel in front of the surface met.
 vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 towardPositive, vec3 towardNegative) {
-    float slab = float(max((voxelResolution() / 2) >> mip, 1));
-    vec3 local = clamp(uvw * slab, vec3(0.5), vec3(slab - 0.5));
     vec4 sum = vec4(0.0);
     for (int face = 0; face < VOXEL_FACES; ++face) {
-        // Face 2 axis + 1 is the one directions of positive component see.
         float weight = (face & 1) != 0 ? towardPositive[face / 2] : towardNegative[face / 2];
-        vec3 tc = vec3((local.x + float(face) * slab) / (slab * float(VOXEL_FACES)),
-                local.yz / slab);
-        sum += weight * textureLod(voxelPyramidTexture, tc, float(mip));
+        sum += weight * readPyramidSlab(uvw, mip, face, VOXEL_FACES);
     }
     return sum;
 }
 
 // The pyramid at a fractional mip as the directions of a cone along dir of half-angle tangent
-// tanHalf see it (all six faces once the cone is wide): readDirectionalPyramid's clamp differs
-// per mip, so the two mips are read apart, with the same face weights, and blended here.
+// tanHalf see it (all six faces once the cone is wide): the slabs' clamp differs per mip, so
+// the two mips are read apart, with the same weights, and blended here.
 vec4 pyramidAt(vec3 uvw, float lod, vec3 dir, float tanHalf) {
-    if (!anisotropicVoxels()) return textureLod(voxelPyramidTexture, uvw, lod);
+    int mip = int(floor(lod));
+    float blend = lod - float(mip);
     vec3 towardPositive, towardNegative;
     faceWeightsOverCone(dir, tanHalf, towardPositive, towardNegative);
-    int mip = int(floor(lod));
     vec4 lower = readDirectionalPyramid(uvw, mip, towardPositive, towardNegative);
-    float blend = lod - float(mip);
     return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, towardPositive,
                                             towardNegative), blend)
                        : lower;
@@ -158,7 +164,10 @@ vec4 pyramidAt(vec3 uvw, float lod, vec3 dir, float tanHalf) {
 // direction sees (voxel.light_read=surface: the wide read averages the surfaces facing as the
 // one met does and leaves out the other sides of what its texels hold, a pier's shaded flank
 // beside a sunlit floor) instead of those the cone's directions see (Crassin et al. 2011).
-bool surfaceRead() { return voxel.grid.z == VOXEL_KIND_ANISOTROPIC_SURFACE_READ; }
+bool surfaceRead() {
+    return voxel.grid.z == VOXEL_KIND_ANISOTROPIC_SURFACE_READ ||
+            voxel.grid.z == VOXEL_KIND_ISOTROPIC_SURFACE_READ;
+}
 
 // Reflected light rho E (W/m^2) per covered area that a cone of the given diameter sees
 // around p on the coarsest level: the filtered voxels while the cone is narrower than they

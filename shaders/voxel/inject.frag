@@ -60,6 +60,6 @@ void main() {
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 previous = imageLoad(voxelHelper, texel);
         imageStore(voxelHelper, texel, roundToHalf(vec4(previous.rgb + flux, 1.0), dither));
-        if (voxel.grid.z != 0) addToFacingFaces(texel, n, vec4(flux, 0.0), dither);
+        if (anisotropicKind()) addToFacingFaces(texel, n, vec4(flux, 0.0), dither);
     })
 }

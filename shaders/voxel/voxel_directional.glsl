@@ -10,6 +10,12 @@
 
 #include "../common/voxel_cascade.glsl"
 
+// Whether the voxels are anisotropic (VoxelUniforms.grid.z, VOXEL_KIND_*).
+bool anisotropicKind() {
+    return voxel.grid.z == VOXEL_KIND_ANISOTROPIC ||
+            voxel.grid.z == VOXEL_KIND_ANISOTROPIC_SURFACE_READ;
+}
+
 // Texel of face `face` of the cascade texel `texel` (level slab included).
 ivec3 directionalTexel(ivec3 texel, int face) {
     return texel + ivec3(face * voxelResolution(), 0, 0);

@@ -54,6 +54,6 @@ void main() {
         vec3 projected = voxel.raster.z != 0.0 ? area * abs(n) : vec3(0.0);
         imageStore(voxelIrradiance, texel,
                 roundToHalf(irradiance + vec4(projected, area), dither));
-        if (voxel.grid.z != 0) addToFacingFaces(texel, n, vec4(0.0, 0.0, 0.0, area), dither);
+        if (anisotropicKind()) addToFacingFaces(texel, n, vec4(0.0, 0.0, 0.0, area), dither);
     })
 }

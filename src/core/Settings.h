@@ -76,8 +76,9 @@ struct VoxelSettings {
                                   // voxel for one plane (0: only level 0, voxel_plane.glsl)
     bool anisotropic = false;     // voxel.anisotropic: each voxel as seen from its 6 faces,
                                   // coarser levels composited front to back per face
-    int lightRead = LIGHT_READ_CONE; // voxel.light_read: which faces of anisotropic voxels a
-                                  // cone's light read takes where it meets a surface
+    int lightRead = LIGHT_READ_CONE; // voxel.light_read: which faces of the voxels (or, for
+                                  // isotropic ones, of the light pyramid) a cone's light
+                                  // read takes where it meets a surface
     int pyramidMips = -1;         // voxel.pyramid_mips: widest pyramid mip cone tracing reads
                                   // (-1 = all; wide texels average across walls)
     bool sceneCentred = false;    // voxel.scene_centred: cascade centred on the scene's bounds

@@ -350,15 +350,19 @@ TEST(RenderCommand, VplBouncesRefusesOtherCounts) {
     }
 }
 
-// The surface's light read picks faces of anisotropic voxels: with isotropic ones voxel GI has
-// nothing to pick from, and the refusal says which setting is missing. The VPLs' voxel
-// occupancy traces no cones and takes the setting as it is.
-TEST(RenderCommand, SurfaceLightReadRefusesIsotropicVoxelsInVoxelGiOnly) {
+// The surface's light read picks faces of the light a cone meets: of anisotropic voxels, and of
+// the light pyramid, which keeps them for isotropic voxels too, so voxel GI takes it with
+// either kind. The VPLs' voxel occupancy traces no cones and takes the setting as it is.
+TEST(RenderCommand, SurfaceLightReadRendersWithEitherKindOfVoxels) {
     const std::string dir = makeTempDir("render-light-read");
-    expectCleanRefusal(runVoxatlas({"render", kCornell, "--out", dir + "/a.png", "--mode",
-                               "voxel", "--width", "32", "--height", "32", "--set",
-                               "voxel.light_read=surface"}),
-            "voxel.anisotropic=1", {dir + "/a.png"});
+    for (const char* anisotropic : {"voxel.anisotropic=0", "voxel.anisotropic=1"}) {
+        const ProcessResult voxel = runVoxatlas({"render", kCornell, "--out", dir + "/a.png",
+                "--mode", "voxel", "--width", "32", "--height", "32", "--set",
+                "voxel.light_read=surface", "--set", anisotropic});
+        EXPECT_EQ(voxel.exitCode, 0) << anisotropic << ": " << voxel.err;
+        EXPECT_TRUE(fs::exists(dir + "/a.png")) << anisotropic;
+        fs::remove(dir + "/a.png");
+    }
     const ProcessResult vpl = runVoxatlas({"render", kCornell, "--out", dir + "/b.png", "--mode",
             "vpl", "--width", "32", "--height", "32", "--set", "voxel.light_read=surface"});
     EXPECT_EQ(vpl.exitCode, 0) << vpl.err;

@@ -526,38 +526,55 @@ TEST_P(EmptyDistanceGpuTest, NormalTexelTellsOccupiedVoxelsAndTheDistanceToThem)
 INSTANTIATE_TEST_SUITE_P(Resolutions, EmptyDistanceGpuTest, ::testing::Values(32, 64),
         [](const auto& info) { return "v" + std::to_string(info.param); });
 
-// The pyramid above the coarsest level averages its reflected light: mip m summed over its
-// texels holds 1/8^(m+1) of the coarsest level's rho E x coverage summed over its voxels, and
-// of its coverage (1%, half-float sums).
-TEST_F(VoxelGpuTest, PyramidConservesTheCoarsestLight) {
+// The pyramid above the coarsest level averages its reflected light per face: face f of mip m
+// summed over its texels holds 1/8^(m+1) of the coarsest level's rho E x coverage x the area
+// its mean normal shows face f (max(+-n_axis, 0)) summed over its voxels, and of that area
+// (1%, half-float sums); every face holds a part of the box, none half of it.
+TEST_F(VoxelGpuTest, PyramidConservesTheCoarsestLightPerFace) {
     const scene::Scene scene = loadCornellBox();
     VoxelFrame frame(scene, thesisAllocation(), {32, 32});
     const voxel::VoxelTextures& textures = frame.manager().textures();
     const voxel::CascadeVolume& volume = frame.manager().volume();
     const auto albedo = readVolume(textures.albedo, volume);
     const auto irradiance = readVolume(textures.irradiance, volume);
+    const auto normal = readVolume(textures.normal, volume);
     const int v = volume.resolution();
     const int coarsest = volume.levels() - 1;
-    glm::dvec4 level(0.0);
+    glm::dvec4 level[VOXEL_FACES] = {};
+    double coverage = 0.0;
     for (int z = 0; z < v; ++z)
         for (int y = 0; y < v; ++y)
             for (int x = 0; x < v; ++x) {
                 const std::size_t i = texelIndex(volume, {x, y, z}, coarsest);
                 if (albedo[i].a <= 0.0f) continue;
                 const glm::vec3 reflected = glm::vec3(albedo[i]) * glm::vec3(irradiance[i]) / albedo[i].a;
-                level += glm::dvec4(glm::dvec3(reflected), double(albedo[i].a));
+                coverage += double(albedo[i].a);
+                for (int face = 0; face < VOXEL_FACES; ++face) {
+                    const float n = normal[i][face / 2];
+                    const double shown = std::max(face % 2 == 0 ? n : -n, 0.0f);
+                    level[face] += shown * glm::dvec4(glm::dvec3(reflected), double(albedo[i].a));
+                }
             }
-    ASSERT_GT(level.a, 0.0);
+    for (int face = 0; face < VOXEL_FACES; ++face) {
+        ASSERT_GT(level[face].a, 0.0) << "face " << face;   // the box shows every face a wall
+        EXPECT_LT(level[face].a, 0.5 * coverage) << "face " << face;
+    }
     for (int mip = 0; mip < textures.pyramidLevels(); ++mip) {
         const int size = v / (2 << mip);
-        std::vector<glm::vec4> texels(std::size_t(size) * std::size_t(size) * std::size_t(size));
+        std::vector<glm::vec4> texels(
+                std::size_t(size) * VOXEL_FACES * std::size_t(size) * std::size_t(size));
         glGetTextureImage(textures.pyramid.id(), mip, GL_RGBA, GL_FLOAT,
                 GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
-        glm::dvec4 sum(0.0);
-        for (const glm::vec4& t : texels) sum += glm::dvec4(t);
+        glm::dvec4 sum[VOXEL_FACES] = {};
+        for (std::size_t t = 0; t < texels.size(); ++t) {
+            sum[(t % std::size_t(size * VOXEL_FACES)) / std::size_t(size)] += glm::dvec4(texels[t]);
+        }
         const double scale = std::pow(8.0, double(mip + 1));
-        for (int c = 0; c < 4; ++c) {
-            EXPECT_NEAR(sum[c] * scale, level[c], 0.01 * level[c]) << "mip " << mip << " channel " << c;
+        for (int face = 0; face < VOXEL_FACES; ++face) {
+            for (int c = 0; c < 4; ++c) {
+                EXPECT_NEAR(sum[face][c] * scale, level[face][c], 0.01 * level[face][c])
+                        << "mip " << mip << " face " << face << " channel " << c;
+            }
         }
     }
 }
@@ -610,8 +627,10 @@ TEST_F(VoxelGpuTest, MemoryMatchesAllocationAndThesisBudget) {
         volumeBytes += bytesWithPrefix(frame.renderer().memory(), volume);
     }
     // 5 textures of v^3 l texels: 3 x RGBA16F (8 B) + RGBA8_SNORM (4 B) + R32UI (4 B), and
-    // the RGBA16F pyramid above the coarsest level: 16^3 + 8^3 + 4^3 + 2^3 + 1 texels.
-    EXPECT_EQ(volumeBytes, std::size_t(32) * 32 * 32 * 3 * 32 + (4096 + 512 + 64 + 8 + 1) * 8);
+    // the RGBA16F pyramid above the coarsest level, 6 faces of 16^3 + 8^3 + 4^3 + 2^3 + 1
+    // texels.
+    EXPECT_EQ(volumeBytes,
+            std::size_t(32) * 32 * 32 * 3 * 32 + (4096 + 512 + 64 + 8 + 1) * 8 * VOXEL_FACES);
     EXPECT_LE(double(volumeBytes), 3.46e6) << "the thesis needs 3.46 MB for the same data";
 }
 

@@ -89,25 +89,49 @@ TEST_F(VoxelSuiteGpuTest, AnisotropicVoxelsKeepTheWallBetweenTwoRooms) {
     }
 }
 
-// voxel.light_read=surface: where a cone meets a surface, the anisotropic voxels' light is
-// read as the surface met faces, so the wide read leaves out the sides of its texels' other
-// surfaces that face the cone but not the light (in the lit room, the wall's and the
-// partition's unlit flanks beside the lit floor). The lit room against the path tracer, 96x96:
-// relative RMSE 0.115 with the cone's faces, 0.093 with the surface's (energy 0.918 -> 0.953).
+// voxel.light_read=surface: where a cone meets a surface, the faces of the light it meets
+// (anisotropic voxels' faces, and the light pyramid's of either kind) are read as the surface
+// met faces, so the wide read leaves out the sides of its texels' other surfaces that face the
+// cone but not the light (in the lit room, the wall's and the partition's unlit flanks beside
+// the lit floor). The lit room against the path tracer, 96x96, with the cone's faces and the
+// surface's: anisotropic voxels relative RMSE 0.115 -> 0.093 (energy 0.918 -> 0.953),
+// isotropic ones 0.096 -> 0.055 (0.924 -> 0.971, the scoreboard's 128x128).
 TEST_F(VoxelSuiteGpuTest, SurfaceLightReadBringsTheLitRoomCloserToThePathTracer) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
     const reference::ReferenceResult truth = referenceIndirect(scene);
     Settings settings;
     settings.specular = 0.0f;
-    settings.voxel.anisotropic = true;
-    settings.voxel.lightRead = LIGHT_READ_CONE;
-    const reference::ImageErrors cone = voxelAgainst(truth, scene, settings);
-    settings.voxel.lightRead = LIGHT_READ_SURFACE;
-    const reference::ImageErrors surface = voxelAgainst(truth, scene, settings);
-    std::printf("two rooms, lit room: cone's faces %.3f / %.3f, surface's faces %.3f / %.3f\n",
-            cone.relativeRmse, cone.energyRatio, surface.relativeRmse, surface.energyRatio);
-    EXPECT_LT(surface.relativeRmse, cone.relativeRmse - 0.01);
-    EXPECT_GT(surface.energyRatio, cone.energyRatio);
+    for (const bool anisotropic : {false, true}) {
+        settings.voxel.anisotropic = anisotropic;
+        settings.voxel.lightRead = LIGHT_READ_CONE;
+        const reference::ImageErrors cone = voxelAgainst(truth, scene, settings);
+        settings.voxel.lightRead = LIGHT_READ_SURFACE;
+        const reference::ImageErrors surface = voxelAgainst(truth, scene, settings);
+        std::printf("two rooms, lit room, anisotropic %d: cone's faces %.3f / %.3f, surface's "
+                    "faces %.3f / %.3f\n",
+                int(anisotropic), cone.relativeRmse, cone.energyRatio, surface.relativeRmse,
+                surface.energyRatio);
+        EXPECT_LT(surface.relativeRmse, cone.relativeRmse - 0.01) << "anisotropic " << anisotropic;
+        EXPECT_GT(surface.energyRatio, cone.energyRatio) << "anisotropic " << anisotropic;
+    }
+}
+
+// The light pyramid above the coarsest level keeps each face apart (RadiancePyramidPass.h), and
+// a wide cone reads the faces its directions see. It averaged every surface its texels held by
+// coverage: on the spot-lit box a cone meeting the ceiling read the ceiling's light mixed with
+// the walls' and blocks' flanks beside the spot's bright floor patch. The target at the
+// defaults: relative RMSE 0.30, energy 0.9-1.1 (the scoreboard's 128x128: 0.383 / 0.887 with
+// one average, 0.205 / 0.988 by faces).
+TEST_F(VoxelSuiteGpuTest, PyramidReadByFacesLightsTheSpotBoxAsThePathTracer) {
+    const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_spot.gltf");
+    Settings settings;
+    settings.specular = 0.0f;
+    const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
+    std::printf("spot-lit box: relative RMSE %.3f, energy ratio %.3f\n", errors.relativeRmse,
+            errors.energyRatio);
+    EXPECT_LT(errors.relativeRmse, 0.30);
+    EXPECT_GT(errors.energyRatio, 0.9);
+    EXPECT_LT(errors.energyRatio, 1.1);
 }
 
 // The adaptive plan holds the two rooms in one scene-centred level of 64^3
@@ -171,25 +195,28 @@ TEST_F(VoxelSuiteGpuTest, ClosedWhiteBoxKeepsItsIndirectEnergy) {
 
 // The same box on the adaptive plan (one level): a wide cone reads the light it meets from
 // the light pyramid. The mip whose texels are one cone diameter wide (the thesis) averages
-// over about twice the cone's footprint, carries the bright wall under the lamp into the dim
-// corners the cones mostly see, and keeps 0.93 of the energy; the default mip
-// (voxel.footprint, texels 0.6 diameters wide) keeps 0.99.
+// over about twice the cone's footprint and carries the bright wall under the lamp into the
+// dim corners the cones mostly see: relative RMSE 0.056, energy 0.957 (0.93 while the pyramid
+// averaged every face together); the default mip (voxel.footprint, texels 0.6 diameters wide)
+// 0.046 and 1.017.
 TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintKeepsTheClosedBoxEnergy) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/closed_white_box.gltf");
     Settings settings;
     settings.specular = 0.0f;
     const float defaultFootprint = settings.voxel.footprint;
+    double thesisError = 0.0;
     for (const float footprint : {1.0f, defaultFootprint}) {
         settings.voxel.footprint = footprint;
         const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
         std::printf("closed white box, footprint %.2f: relative RMSE %.3f, energy ratio %.3f\n",
                 footprint, errors.relativeRmse, errors.energyRatio);
         if (footprint == 1.0f) {
-            EXPECT_LT(errors.energyRatio, 0.95);
+            thesisError = errors.relativeRmse;
         } else {
             EXPECT_GT(errors.energyRatio, 0.97);
             EXPECT_LT(errors.energyRatio, 1.03);
             EXPECT_LT(errors.relativeRmse, 0.06);
+            EXPECT_LT(errors.relativeRmse, thesisError - 0.005);
         }
     }
 }

@@ -38,7 +38,9 @@ TEST(ResourcePlan, CornellBoxIsOneSceneCentredLevel) {
     // The level holds the whole box (0.56 m) with snapping room, in voxels under 2 cm.
     EXPECT_GE(plan.voxel.finestExtent, 0.5592f);
     EXPECT_LT(plan.voxel.voxelSize(0), 0.02f);
-    const std::size_t pyramid = 8u * (16u * 16u * 16u + 8u * 8u * 8u + 4u * 4u * 4u + 2u * 2u * 2u + 1u);
+    // Six faces of 16^3 + 8^3 + ... + 1 RGBA16F texels.
+    const std::size_t pyramid =
+            8u * 6u * (16u * 16u * 16u + 8u * 8u * 8u + 4u * 4u * 4u + 2u * 2u * 2u + 1u);
     const std::size_t distanceScratch = 2u * 32u * 32u * 32u;
     EXPECT_EQ(plan.voxelBytes(), 32u * 32u * 32u * 32u + pyramid + distanceScratch)
             << "32 bytes per voxel plus the radiance pyramid of the coarsest level and the "

@@ -29,6 +29,8 @@ void RadiancePyramidPass::execute(const Inputs& in, const Outputs& out,
                 GL_READ_ONLY, GL_RGBA16F);
         glBindImageTexture(BIND_IMG_VOXEL_IRRADIANCE, in.cascade.irradiance.id(), 0, GL_TRUE, 0,
                 GL_READ_ONLY, GL_RGBA16F);
+        glBindImageTexture(BIND_IMG_VOXEL_NORMAL, in.cascade.normal.id(), 0, GL_TRUE, 0,
+                GL_READ_ONLY, GL_RGBA8_SNORM);
     }
     for (int mip = 0; mip < t.pyramidLevels(); ++mip) {
         // Mip 0 reads the cascade; the source binding is then unused but still valid.

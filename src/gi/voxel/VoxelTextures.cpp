@@ -38,7 +38,8 @@ void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces)
     directional = anisotropic
             ? createVolume(GL_RGBA16F, {v * faces, v, v * l}, "voxel/directional")
             : gl::Texture();
-    pyramid = gl::createTexture3D(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2}, pyramidLevels(),
+    // The pyramid keeps each face apart for isotropic voxels too (RadiancePyramidPass.h).
+    pyramid = gl::createTexture3D(GL_RGBA16F, {v / 2 * VOXEL_FACES, v / 2, v / 2}, pyramidLevels(),
             "voxel/pyramid");
     glTextureParameteri(pyramid.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(pyramid.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -68,7 +69,7 @@ std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotro
             {"voxel/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/helper", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)},
-            {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * faces, v / 2, v / 2},
+            {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * VOXEL_FACES, v / 2, v / 2},
                     gl::fullMipCount(v / 2))}};
     if (bounces) items.push_back({"voxel/gathered", gl::textureBytes(GL_RGBA16F, size, 1)});
     items.push_back({"voxel/distance_scratch", 2 * gl::textureBytes(GL_R8UI, glm::ivec3(v), 1)});

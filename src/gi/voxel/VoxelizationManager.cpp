@@ -60,9 +60,10 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 std::to_string(max3D);
         return false;
     }
-    if (s.lightRead == LIGHT_READ_SURFACE && !s.anisotropic) {
-        error = "voxel.light_read=surface needs anisotropic voxels (voxel.anisotropic=1): an "
-                "isotropic voxel holds one light for every direction";
+    if (s.resolution / 2 * VOXEL_FACES > max3D) {
+        error = "voxel.resolution: the light pyramid's 6 faces of voxel.resolution / 2 = " +
+                std::to_string(s.resolution / 2 * VOXEL_FACES) +
+                " texels exceed GL_MAX_3D_TEXTURE_SIZE " + std::to_string(max3D);
         return false;
     }
     GLint maxViewport[2] = {0, 0};
@@ -120,9 +121,10 @@ void VoxelizationManager::writeUniforms() {
         const int l = std::min(level, mVolume.levels() - 1);
         u.levelOrigin[level] = glm::vec4(mVolume.origin(l), mVolume.voxelSize(l));
     }
-    const int kind = !mSettings.anisotropic              ? VOXEL_KIND_ISOTROPIC
-                     : mSettings.lightRead == LIGHT_READ_SURFACE ? VOXEL_KIND_ANISOTROPIC_SURFACE_READ
-                                                                 : VOXEL_KIND_ANISOTROPIC;
+    const bool surfaceRead = mSettings.lightRead == LIGHT_READ_SURFACE;
+    const int kind = mSettings.anisotropic
+            ? (surfaceRead ? VOXEL_KIND_ANISOTROPIC_SURFACE_READ : VOXEL_KIND_ANISOTROPIC)
+            : (surfaceRead ? VOXEL_KIND_ISOTROPIC_SURFACE_READ : VOXEL_KIND_ISOTROPIC);
     u.grid = glm::ivec4(mVolume.resolution(), mVolume.levels(), kind, mSettings.pyramidMips);
     const ConeSet cones = coneSet(mSettings.cones, mSettings.coneAngle);
     const float halfAngle = glm::radians(cones.apertureDegrees) * 0.5f;
