@@ -87,7 +87,7 @@ void main() {
         GltfSurface s = gltfSurface(baseColor.rgb, m.metallicRoughness.x, m.metallicRoughness.y);
         vec3 dir = specularDominantDirection(s, n, v);
         SpecularCone lobe = specularCone(s);
-        vec3 cone = traceCone(origin, dir, voxel.trace.y, lobe.tanHalfAngle);
+        vec3 cone = traceCone(origin, dir, voxel.trace.y, lobe.tanHalfAngle, true);
         vec3 incident = mix(irradiance / PI, cone, lobe.share);
         outSpecular = vec4(incident * specularAlbedo(s, max(dot(n, v), 0.0)), viewDepth);
     }

@@ -134,10 +134,10 @@ vec4 readPyramidSlab(vec3 uvw, int mip, int slab, int slabs) {
     return textureLod(voxelPyramidTexture, tc, float(mip));
 }
 
-// One mip of the directional pyramid, each face weighted as faceWeightsOverCone weighs it for
-// the cone reading (face 2 axis + 1 is the one directions of positive component see).
+// One mip of the pyramid, each face weighted as faceWeightsOverCone weighs it for the cone
+// reading (face 2 axis + 1 is the one directions of positive component see).
 // coarsestLight moves the read half a texel in front of the surface met.
-vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 towardPositive, vec3 towardNegative) {
+vec4 readPyramidFaces(vec3 uvw, int mip, vec3 towardPositive, vec3 towardNegative) {
     vec4 sum = vec4(0.0);
     for (int face = 0; face < VOXEL_FACES; ++face) {
         float weight = (face & 1) != 0 ? towardPositive[face / 2] : towardNegative[face / 2];
@@ -146,16 +146,35 @@ vec4 readDirectionalPyramid(vec3 uvw, int mip, vec3 towardPositive, vec3 towardN
     return sum;
 }
 
+// One mip of the pyramid as seen along `seen` alone: the three faces it travels towards, each
+// by |seen_axis| (faceWeightsOverCone of a cone of no width, without the other three fetches).
+vec4 readPyramidAlong(vec3 uvw, int mip, vec3 seen) {
+    vec4 sum = vec4(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        sum += abs(seen[axis]) * readPyramidSlab(uvw, mip, faceSeenAlong(seen, axis), VOXEL_FACES);
+    }
+    return sum;
+}
+
 // The pyramid at a fractional mip as the directions of a cone along dir of half-angle tangent
-// tanHalf see it (all six faces once the cone is wide): the slabs' clamp differs per mip, so
-// the two mips are read apart, with the same weights, and blended here.
-vec4 pyramidAt(vec3 uvw, float lod, vec3 dir, float tanHalf) {
+// tanHalf see it: the slabs' clamp differs per mip, so the two mips are read apart, with the
+// same weights, and blended here. All six faces once the cone is wide for anisotropic voxels
+// and for a lone cone (`alone`: the specular lobe, whose light from the faces beside and
+// behind its axis no other cone brings; the glossy box's metal block, accuracy-analysis.md);
+// otherwise, and for a read of no width (the surface read, tanHalf = 0), the three faces the
+// axis travels towards, at half the fetches: the cones of a set leave the faces beside each
+// axis to its neighbours (isotropic voxels: no score of the suite moved by more than 0.004).
+vec4 pyramidAt(vec3 uvw, float lod, vec3 dir, float tanHalf, bool alone) {
     int mip = int(floor(lod));
     float blend = lod - float(mip);
+    if (!(anisotropicVoxels() || alone) || tanHalf <= 0.0) {
+        vec4 lower = readPyramidAlong(uvw, mip, dir);
+        return blend > 0.0 ? mix(lower, readPyramidAlong(uvw, mip + 1, dir), blend) : lower;
+    }
     vec3 towardPositive, towardNegative;
     faceWeightsOverCone(dir, tanHalf, towardPositive, towardNegative);
-    vec4 lower = readDirectionalPyramid(uvw, mip, towardPositive, towardNegative);
-    return blend > 0.0 ? mix(lower, readDirectionalPyramid(uvw, mip + 1, towardPositive,
+    vec4 lower = readPyramidFaces(uvw, mip, towardPositive, towardNegative);
+    return blend > 0.0 ? mix(lower, readPyramidFaces(uvw, mip + 1, towardPositive,
                                             towardNegative), blend)
                        : lower;
 }
@@ -180,7 +199,7 @@ bool surfaceRead() {
 // the cone's half-angle tangent: the wide read sees the faces all its directions see. The
 // surface read takes one direction, the one a cone meeting the surface head-on would have.
 // Selects, not branches: llvmpipe would run both sides.
-vec3 coarsestLight(vec3 p, float diameter, vec3 dir, float tanHalf, vec3 front) {
+vec3 coarsestLight(vec3 p, float diameter, vec3 dir, float tanHalf, vec3 front, bool alone) {
     int coarsest = voxelLevels() - 1;
     vec3 seen = surfaceRead() ? -front : dir;
     float seenSpread = surfaceRead() ? 0.0 : tanHalf;
@@ -191,7 +210,7 @@ vec3 coarsestLight(vec3 p, float diameter, vec3 dir, float tanHalf, vec3 front) 
         if (voxel.grid.w >= 0) mip = min(mip, float(voxel.grid.w));
         vec3 read = p + front * (0.5 * exp2(mip + 1.0) * levelVoxelSize(coarsest));
         wide = pyramidAt((read - levelOrigin(coarsest)) / levelExtent(coarsest), mip, seen,
-                seenSpread);
+                seenSpread, alone);
         if (spread >= 1.0 && wide.a > 0.0) return wide.rgb / wide.a;
     }
     if (anisotropicVoxels()) {
@@ -218,7 +237,7 @@ float boxExit(vec3 local, vec3 dir, vec3 lo, vec3 hi) {
 }
 
 // Radiance seen along a cone from origin along dir whose half-angle has tangent tanHalf.
-vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
+vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf, bool alone) {
     float finest = levelVoxelSize(0);
     int coarsest = voxelLevels() - 1;
     float coarsestSize = levelVoxelSize(coarsest);
@@ -319,7 +338,7 @@ vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {
                     : 1.0 - pow(1.0 - min(coverage, 0.9999), path / coarsestSize);
             hit = clamp(hit, 0.0, path);
             reflected = coarsestLight(p + dir * hit, max(2.0 * tanHalf * (entry + hit), finest),
-                    dir, tanHalf, front);
+                    dir, tanHalf, front, alone);
         } else {
             ++steps;
             float path = max(min(diameter, levelVoxelSize(level + (blend > 0.0 ? 1 : 0))) *
@@ -371,7 +390,7 @@ vec3 coneIrradiance(vec3 origin, vec3 n, float turn, float rise, int coneClass, 
     vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t);
     float tanHalf = voxel.trace.x;
-    vec3 e = voxel.cones.x * traceCone(origin, n, maxDistance, tanHalf);
+    vec3 e = voxel.cones.x * traceCone(origin, n, maxDistance, tanHalf, false);
     for (int k = 0; k < 3; ++k) {
         vec4 ring = voxel.coneRings[k];
         int count = int(ring.x);
@@ -381,7 +400,7 @@ vec3 coneIrradiance(vec3 origin, vec3 n, float turn, float rise, int coneClass, 
         for (int i = coneClass; i < count; i += classes) {
             float phi = (float(i) + 0.5 * float(k) + turn) * spacing;
             vec3 dir = cosine * n + sine * (cos(phi) * t + sin(phi) * b);
-            e += ring.w * float(classes) * traceCone(origin, dir, maxDistance, tanHalf);
+            e += ring.w * float(classes) * traceCone(origin, dir, maxDistance, tanHalf, false);
         }
     }
     return PI * e;
