@@ -34,18 +34,19 @@ def load_modules():
 
 TRACE = os.path.join("voxel", "cone_tracing.glsl")
 TRACE_MAIN = os.path.join("voxel", "cone_trace.frag")
-CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf);"
+CONE_CALL = "traceCone(origin, n, maxDistance, tanHalf, false);"
 RING_LOOP = "for (int k = 0; k < 3; ++k) {"
 LIGHT_CALL = "reflected = coarsestLight("
-PYRAMID_READ = "textureLod(voxelPyramidTexture, uvw, lod);"
-PYRAMID_TEXEL = ("texelFetch(voxelPyramidTexture, clamp(ivec3(uvw * float(max((voxelResolution() / 2) "
-                 ">> int(lod), 1))), ivec3(0), ivec3(max((voxelResolution() / 2) >> int(lod), 1) - 1)), "
-                 "int(lod));")
+PYRAMID_READ = "textureLod(voxelPyramidTexture, tc, float(mip));"
+PYRAMID_TEXEL = ("texelFetch(voxelPyramidTexture, clamp(ivec3(tc * vec3(textureSize(voxelPyramidTexture, "
+                 "mip))), ivec3(0), textureSize(voxelPyramidTexture, mip) - 1), mip);")
 
-TRACE_CONE_DECL = "vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf) {"
+TRACE_CONE_DECL = ("vec3 traceCone(vec3 origin, vec3 dir, float maxDistance, float tanHalf, "
+                   "bool alone) {")
 # The trace of Friduric's demo (the peer of results-performance.md) over the coarsest level:
 # steps of one cone diameter from two voxels out, each one trilinear read of the radiance
-# pyramid at the mip as wide as the cone, composited front to back.
+# pyramid at the mip as wide as the cone, composited front to back. The pyramid keeps six
+# faces side by side: the peer's one read takes the face the cone's dominant axis sees.
 PEER_TRACE = """
     {
         int peerLevel = voxelLevels() - 1;
@@ -57,7 +58,11 @@ PEER_TRACE = """
             vec3 uvw = (origin + dir * peerDist - levelOrigin(peerLevel)) / levelExtent(peerLevel);
             if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
             float peerDiameter = max(2.0 * tanHalf * peerDist, peerVoxel);
-            vec4 s = textureLod(voxelPyramidTexture, uvw, log2(peerDiameter / peerVoxel));
+            int peerAxis = abs(dir.x) > max(abs(dir.y), abs(dir.z)) ? 0
+                    : (abs(dir.y) > abs(dir.z) ? 1 : 2);
+            vec3 peerTc = vec3((uvw.x + float(faceSeenAlong(dir, peerAxis))) / float(VOXEL_FACES),
+                    uvw.yz);
+            vec4 s = textureLod(voxelPyramidTexture, peerTc, log2(peerDiameter / peerVoxel));
             peerRadiance += (1.0 - peerOpacity) * s.rgb / PI;
             peerOpacity += (1.0 - peerOpacity) * s.a;
             peerDist += peerDiameter;
@@ -79,7 +84,7 @@ PROFILE = {
     # The light read kept, its pyramid sample made cheaper (what the texture sample costs
     # within the read): the same mip for every lane, or one texel fetch at the mip below.
     "light read at one mip for all": ("the pyramid sample's per-lane mip: every lane reads "
-                                      "mip 2", [(PYRAMID_READ, "textureLod(voxelPyramidTexture, uvw, 2.0);")]),
+                                      "mip 2", [(PYRAMID_READ, "textureLod(voxelPyramidTexture, tc, 2.0);")]),
     "light read as one texel": ("the pyramid sample's filtering: one texel fetch at the mip "
                                 "below the cone's", [(PYRAMID_READ, PYRAMID_TEXEL)]),
     # Not a part switched off but the whole walk replaced: what the peer's trace costs in

@@ -5,7 +5,13 @@
 // coverage x faceProjection(n, f) with n the voxel's mean normal (shorter where its surfaces
 // face apart: the two sides of a thin wall show no face): rgb = rho E x that area, a = the
 // area, averaged over all 8 children (empty ones count as zero), so rgb / a is the mean
-// reflected light of the surfaces in the texel that face that way.
+// reflected light of the surfaces in the texel that face that way. Only a level voxelized
+// directly holds its surfaces' mean normal; a propagated coarsest level (a cascade of several
+// levels) holds the normal of its children's mean, normalised (voxel_plane.glsl), which does
+// not say which faces its surfaces show (on the thesis' fixed plan, the corner voxels' floor
+// light went to the walls' faces: the Cornell box's colour bleeding fell by a third and its
+// energy rose to 1.16). There every face gets the whole coverage, and each face holds the
+// one average of every surface the texel holds.
 #include "../common/constants.glsl"
 #include "../common/voxel_cascade.glsl"
 #include "voxel_directional.glsl"
@@ -42,8 +48,10 @@ void main() {
         // albedo and E are both premultiplied by coverage: their product carries it twice.
         vec3 reflected = albedo.rgb * imageLoad(voxelIrradiance, child + cascadeSlab).rgb / coverage;
         vec3 n = imageLoad(voxelNormal, child + cascadeSlab).xyz;
+        bool voxelizedHere = voxelLevels() == 1;
         for (int face = 0; face < VOXEL_FACES; ++face) {
-            sums[face] += faceProjection(n, face) * vec4(reflected, coverage);
+            float shown = voxelizedHere ? faceProjection(n, face) : 1.0;
+            sums[face] += shown * vec4(reflected, coverage);
         }
     }
     for (int face = 0; face < VOXEL_FACES; ++face) {

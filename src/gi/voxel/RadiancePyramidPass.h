@@ -8,7 +8,9 @@
 // and the ceiling with the walls beside a spot's patch: accuracy-analysis.md). Isotropic
 // voxels (radiance_pyramid.comp): mip 0 averages 2x2x2 coarsest voxels of rho E x the area
 // each face is shown (coverage x max(+-n_axis, 0), n the mean normal) and of that area; each
-// further mip averages 2x2x2 texels of the previous one. Anisotropic voxels
+// further mip averages 2x2x2 texels of the previous one. A propagated coarsest level (a
+// cascade of several levels), whose normals do not say which faces its surfaces show, gives
+// every face the whole coverage: each face holds the one average. Anisotropic voxels
 // (directional_pyramid.comp): composited front to back per face from the directional voxels.
 // One dispatch per mip.
 // Inputs : VoxelTextures albedo (rgb x coverage, a = coverage), irradiance (E x coverage,
