@@ -124,7 +124,7 @@ void addVplSweep(std::vector<BenchConfiguration>& list, bool full) {
 std::vector<SettingChange> voxelQualityPreset() {
     return {{"voxel.resolution", "64"}, {"voxel.trace_scale", "1"},
             {"voxel.inject_resolution", "256"}, {"voxel.cones", "37"},
-            {"voxel.jitter_elevation", "1"}, {"voxel.anisotropic", "1"}};
+            {"voxel.jitter_elevation", "1"}, {"voxel.one_level_limit", "256"}};
 }
 
 float shortMaxDistance(float sceneDiagonal) {
@@ -209,7 +209,7 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
     quality.insert(quality.begin() + 1, {"voxel.cascades", "4"});
     quality.push_back({"voxel.coverage_max_axis", "1"});
     list.push_back(voxel(
-            "preset quality (v64 l4 trace 1, max-axis, inject 4v, 37 cones, anisotropic)",
+            "preset quality (v64 l4 trace 1, max-axis, inject 4v, 37 cones)",
             quality, 1.0, 2.0));
 
     list.push_back(atlasBase);

@@ -74,8 +74,9 @@ struct SweepOptions {
         std::string& error);
 
 // The voxel quality preset, under any plan: v=64, full-resolution trace, injection at 4v, 37
-// cones moved in elevation by the dither, anisotropic voxels (the accuracy suite's; the
-// bench's "preset quality" row adds four levels of the fixed plan).
+// cones moved in elevation by the dither, and on the adaptive plan one level of up to 256^3
+// (the accuracy suite's; the bench's "preset quality" row adds four levels of the fixed
+// plan, which the one-level limit does not touch).
 [[nodiscard]] std::vector<SettingChange> voxelQualityPreset();
 
 // The "short" voxel.max_distance for a scene: a quarter of its bounding-box diagonal, rounded

@@ -194,8 +194,9 @@ const std::vector<SettingSpec>& settingSpecs() {
                 4, 256, Zero::Refused, [](Settings& s) -> int& { return s.voxel.resolution; }),
         powerOfTwoSetting("voxel.one_level_limit",
                 "render.plan=adaptive: a scene that one scene-centred level of at most this many "
-                "voxels per axis holds at the finest voxel the plan needs gets that level instead "
-                "of a camera-centred cascade (power of two; 0 = always a cascade)",
+                "voxels per axis holds at the finest voxel the plan needs, or at up to twice it, "
+                "gets that level instead of a camera-centred cascade (power of two; 0 = always a "
+                "cascade)",
                 4, 256, Zero::Allowed, [](Settings& s) -> int& { return s.voxel.oneLevelLimit; }),
         powerOfTwoSetting("voxel.occupancy_resolution",
                 "voxels per axis of the occupancy that atlas.visibility=voxel, "

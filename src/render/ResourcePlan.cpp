@@ -83,10 +83,8 @@ VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
     // voxel, a thin wall is a whole voxel thick wherever a cone meets it, and the light a
     // surface receives no longer changes with the level that holds it as the camera moves
     // (accuracy-analysis.md: the thin-wall leak 7.9 % -> 2.3 %, Sponza's arcade 0.63 -> 0.35).
-    int oneLevel = s.resolution;
-    while (oneLevel < s.oneLevelLimit && float(oneLevel) * finestVoxel < covering) oneLevel *= 2;
-    if (oneLevel <= s.oneLevelLimit && float(oneLevel) * finestVoxel >= covering) {
-        plan.resolution = oneLevel;
+    const auto oneLevelOf = [&](int resolution) {
+        plan.resolution = resolution;
         plan.levels = 1;
         plan.sceneCentred = true;
         plan.finestExtent = covering;
@@ -94,8 +92,22 @@ VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
         // pixels a side), so voxelizing the one level costs what one raster of the cascade
         // did; at 2 pixels per voxel edge the areas it measures are as good as at 8
         // (accuracy-analysis.md).
-        plan.multiplier = std::max(s.resolution * s.multiplier / oneLevel, 1);
+        plan.multiplier = std::max(s.resolution * s.multiplier / resolution, 1);
         return plan;
+    };
+    int oneLevel = s.resolution;
+    while (oneLevel < s.oneLevelLimit && float(oneLevel) * finestVoxel < covering) oneLevel *= 2;
+    if (oneLevel <= s.oneLevelLimit && float(oneLevel) * finestVoxel >= covering) {
+        return oneLevelOf(oneLevel);
+    }
+    // So does a scene that the largest such level holds at up to twice that voxel: a cascade
+    // would give it that voxel only in its finest level's box around the camera, its second
+    // level's voxel (twice as coarse) beyond, and coarser ones further out, where the one level
+    // keeps it everywhere; and only one level lets the light pyramid keep each face apart
+    // (accuracy-analysis.md: the open-front box 0.498 -> 0.279).
+    if (s.oneLevelLimit >= s.resolution &&
+            2.0f * float(s.oneLevelLimit) * finestVoxel >= covering) {
+        return oneLevelOf(s.oneLevelLimit);
     }
     // The centre stays inside the bounds, so the coarsest level reaches all of them from
     // anywhere once it spans twice the longest side (with finestExtentFor's snapping slack).

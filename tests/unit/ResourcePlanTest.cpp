@@ -1,6 +1,7 @@
 // The resource plan (render/ResourcePlan.h) for the scenes users render: the Cornell box gets
 // one scene-centred level of v^3, Sponza one of 128^3 at the finest voxel a cascade would
-// have, and a cascade reaching all of it where one level would need more; the fixed plan
+// have, the open-front box one of 128^3 at less than twice the voxel it asks for, and a
+// cascade reaching all of it where one level would need more; the fixed plan
 // reports the thesis' allocation as given; lights that cannot reach the scene are left out.
 #include "render/ResourcePlan.h"
 #include "Sponza.h"
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gi::render {
@@ -130,14 +132,50 @@ TEST(ResourcePlan, SponzaIsOneSceneCentredLevelAtTheCascadesFinestVoxel) {
 TEST(ResourcePlan, OneLevelWhereItIsNoLargerThanTheLimit) {
     const scene::Scene rooms = test::loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
     Settings s = adaptive(32);
-    for (const int limit : {0, 32, 64, 128}) {
+    const float cascadeVoxel = [&] {
+        s.voxel.oneLevelLimit = 0;
+        return planResources(rooms, rooms.lights, s, startEye(rooms)).voxel.voxelSize(0);
+    }();
+    for (const int limit : {0, 16, 32, 64, 128}) {
         s.voxel.oneLevelLimit = limit;
         const ResourcePlan plan = planResources(rooms, rooms.lights, s, startEye(rooms));
-        // The rooms need 64 voxels a side at the cascade's finest voxel.
-        EXPECT_EQ(plan.voxel.levels, limit >= 64 ? 1 : 3) << "limit " << limit;
-        EXPECT_EQ(plan.voxel.resolution, limit >= 64 ? 64 : 32) << "limit " << limit;
-        EXPECT_EQ(plan.voxel.multiplier, limit >= 64 ? 4 : 0) << "limit " << limit;
+        // The rooms need 64 voxels a side at the voxel their size asks for; a limit of 32
+        // holds them at twice that voxel, the cascade's second level's (the next test).
+        const bool one = limit >= 32;
+        EXPECT_EQ(plan.voxel.levels, one ? 1 : 3) << "limit " << limit;
+        EXPECT_EQ(plan.voxel.resolution, one ? std::min(limit, 64) : 32) << "limit " << limit;
+        EXPECT_EQ(plan.voxel.multiplier, limit >= 64 ? 4 : limit == 32 ? 8 : 0)
+                << "limit " << limit;
+        if (limit == 32) EXPECT_LE(plan.voxel.voxelSize(0), 2.0f * cascadeVoxel * 1.0001f);
     }
+}
+
+// A scene the largest level the limit allows holds at up to twice the voxel its thickness
+// asks for gets that level rather than a cascade: the open-front box (2.6 m of sunlit ground
+// around a 0.56 m box) in 128^3 voxels of 2.2 cm instead of five levels of 32^3 whose finest
+// (1.1 cm) holds 35 cm around the camera and whose third (4.4 cm) already holds the box's
+// back; a finer voxel.size, which one level could hold only at more than twice its voxel,
+// keeps the cascade.
+TEST(ResourcePlan, OneLevelAtUpToTwiceTheVoxelBeforeACascade) {
+    const scene::Scene box = test::loadTestScene("assets/scene_suite/cornell_open_front_sun.gltf");
+    Settings s = adaptive(32);
+    const glm::vec3 size = box.bounds.size();
+    const float asked = std::min(size.x, std::min(size.y, size.z)) / 32.0f;
+    const ResourcePlan plan = planResources(box, box.lights, s, startEye(box));
+    EXPECT_EQ(plan.voxel.levels, 1);
+    EXPECT_TRUE(plan.voxel.sceneCentred);
+    EXPECT_EQ(plan.voxel.resolution, 128);
+    EXPECT_GT(plan.voxel.voxelSize(0), asked) << "one level of 128^3 at the asked voxel fits";
+    EXPECT_LE(plan.voxel.voxelSize(0), 2.0f * asked);
+    EXPECT_GE(plan.voxel.finestExtent, std::max(size.x, std::max(size.y, size.z)));
+    s.voxel.oneLevelLimit = 64;
+    const ResourcePlan cascade = planResources(box, box.lights, s, startEye(box));
+    EXPECT_EQ(cascade.voxel.levels, 5) << "64^3 would need more than twice the voxel";
+    EXPECT_FALSE(cascade.voxel.sceneCentred);
+    s.voxel.oneLevelLimit = 128;
+    s.voxel.size = 0.5f * asked;
+    const ResourcePlan finer = planResources(box, box.lights, s, startEye(box));
+    EXPECT_GT(finer.voxel.levels, 1) << "128^3 would need more than twice the voxel";
 }
 
 TEST(ResourcePlan, ApplyWritesThePlanIntoTheSettings) {
