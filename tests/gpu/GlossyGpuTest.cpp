@@ -57,18 +57,6 @@ std::vector<bool> metalPixels(scene::Scene scene) {
     return mask;
 }
 
-double sumOver(const core::Image& image, const std::vector<bool>& mask) {
-    double sum = 0.0;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            if (!mask[std::size_t(y * image.width + x)]) continue;
-            const glm::vec3 c = image.at(x, y);
-            sum += double(c.r + c.g + c.b);
-        }
-    }
-    return sum;
-}
-
 class GlossyGpuTest : public GpuTest {};
 
 // The metal block's indirect light, voxel GI with `settings` over the path tracer's with the
@@ -84,8 +72,8 @@ double metalBlockShare(const Settings& settings) {
     referenceSettings.glossy = true;
     const reference::ReferenceResult truth = reference::renderReference(scene, camera(scene),
             kSize, kSize, referenceSettings);
-    const double voxel = sumOver(voxelIndirect(scene, settings), metal);
-    const double reference = sumOver(truth.indirect, metal);
+    const double voxel = sumOverMask(voxelIndirect(scene, settings), metal);
+    const double reference = sumOverMask(truth.indirect, metal);
     std::printf("metal block indirect light over %d pixels: voxel %.3f, reference %.3f, "
                 "ratio %.3f\n", pixels, voxel, reference, voxel / reference);
     EXPECT_GT(reference, 0.0);

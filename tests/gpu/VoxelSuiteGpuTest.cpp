@@ -196,11 +196,28 @@ TEST_F(VoxelSuiteGpuTest, ClosedWhiteBoxKeepsItsIndirectEnergy) {
 // The same box on the adaptive plan (one level): a wide cone reads the light it meets from
 // the light pyramid. The mip whose texels are one cone diameter wide (the thesis) averages
 // over about twice the cone's footprint and carries the bright wall under the lamp into the
-// dim corners the cones mostly see: relative RMSE 0.056, energy 0.956 (0.93 while the pyramid
-// averaged every face together); the default mip (voxel.footprint, texels 0.6 diameters wide)
-// 0.046 and 1.018.
+// dim corners the cones mostly see. In this box it kept 0.956 of the energy at relative RMSE
+// 0.056 against the default mip's (voxel.footprint, texels 0.6 diameters wide) 1.018 and
+// 0.046; since cones stop at every floor they cross (cone_tracing.glsl's plane tolerance) both
+// score alike here (0.046 and 0.044, energy 0.967 and 1.029), and the next test compares them
+// where they differ.
 TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintKeepsTheClosedBoxEnergy) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/closed_white_box.gltf");
+    Settings settings;
+    settings.specular = 0.0f;
+    const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
+    std::printf("closed white box, footprint %.2f: relative RMSE %.3f, energy ratio %.3f\n",
+            settings.voxel.footprint, errors.relativeRmse, errors.energyRatio);
+    EXPECT_GT(errors.energyRatio, 0.97);
+    EXPECT_LT(errors.energyRatio, 1.03);
+    EXPECT_LT(errors.relativeRmse, 0.06);
+}
+
+// The default footprint against the thesis' on the classic Cornell box, whose lamp 1 cm under
+// the ceiling makes one small bright patch that the thesis' wider read spreads over the
+// ceiling and walls (scoreboard form, 128x128: 0.228 at energy 0.984 against 0.305 at 0.932).
+TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintBeatsTheThesisReadOnTheCornellBox) {
+    const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_classic.gltf");
     Settings settings;
     settings.specular = 0.0f;
     const float defaultFootprint = settings.voxel.footprint;
@@ -208,15 +225,14 @@ TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintKeepsTheClosedBoxEnergy) {
     for (const float footprint : {1.0f, defaultFootprint}) {
         settings.voxel.footprint = footprint;
         const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
-        std::printf("closed white box, footprint %.2f: relative RMSE %.3f, energy ratio %.3f\n",
-                footprint, errors.relativeRmse, errors.energyRatio);
+        std::printf("classic Cornell box, footprint %.2f: relative RMSE %.3f, energy ratio "
+                    "%.3f\n", footprint, errors.relativeRmse, errors.energyRatio);
         if (footprint == 1.0f) {
             thesisError = errors.relativeRmse;
         } else {
-            EXPECT_GT(errors.energyRatio, 0.97);
-            EXPECT_LT(errors.energyRatio, 1.03);
-            EXPECT_LT(errors.relativeRmse, 0.06);
-            EXPECT_LT(errors.relativeRmse, thesisError - 0.005);
+            EXPECT_GT(errors.energyRatio, 0.95);
+            EXPECT_LT(errors.energyRatio, 1.05);
+            EXPECT_LT(errors.relativeRmse, thesisError - 0.03);
         }
     }
 }

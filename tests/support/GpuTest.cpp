@@ -106,4 +106,16 @@ bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x
     return true;
 }
 
+double sumOverMask(const core::Image& image, const std::vector<bool>& mask) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            if (!mask[std::size_t(y * image.width + x)]) continue;
+            const glm::vec3 c = image.at(x, y);
+            sum += double(c.r + c.g + c.b);
+        }
+    }
+    return sum;
+}
+
 } // namespace gi::test

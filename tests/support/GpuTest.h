@@ -64,6 +64,10 @@ struct RenderRequest {
 [[nodiscard]] bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x,
         int y, float planeY, glm::vec3& point);
 
+// The sum of r + g + b over the pixels whose entry in `mask` (row-major, the image's size)
+// is true.
+[[nodiscard]] double sumOverMask(const core::Image& image, const std::vector<bool>& mask);
+
 // Absolute path of a file in the source tree (assets/..., tests/...).
 [[nodiscard]] std::string sourcePath(const std::string& relative);
 
