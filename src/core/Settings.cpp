@@ -247,10 +247,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "six directional values per voxel, filtered front to back per face (Crassin 2011)",
                 [](Settings& s) -> bool& { return s.voxel.anisotropic; }),
         choiceSetting("voxel.light_read",
-                "where a cone meets a surface, read the faces of the light it meets (anisotropic "
-                "voxels, and the light pyramid of isotropic ones) as the cone's directions see "
-                "them (cone) or as the surface met faces (surface: its wide read leaves out the "
-                "shaded sides of what else its texels hold)",
+                "where a diffuse cone meets a surface, read the faces of the light it meets "
+                "(anisotropic voxels, and the light pyramid of isotropic ones) as the cone's "
+                "directions see them (cone) or as the surface met faces (surface: its wide read "
+                "leaves out the shaded sides of what else its texels hold); the specular cone "
+                "reads as its directions see",
                 {"cone", "surface"}, [](Settings& s) -> int& { return s.voxel.lightRead; }),
         intSetting("voxel.pyramid_mips",
                 "widest mip of the light pyramid above the coarsest level cone tracing reads "

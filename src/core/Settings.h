@@ -30,11 +30,12 @@ struct LineSpaceSettings {
     bool operator==(const LineSpaceSettings&) const = default;
 };
 
-// voxel.light_read: where a cone meets a surface, the light of anisotropic voxels is read as
-// the cone's directions see their faces (cone, after Crassin et al. 2011: each face by the area
-// it shows them) or as the faces of the surface met (surface): the wide read then averages
-// only surfaces facing the way it faces, not the shaded sides of whatever else its texels hold
-// (accuracy-analysis.md).
+// voxel.light_read: where a diffuse cone meets a surface, the light of anisotropic voxels and
+// of the light pyramid's faces is read as the cone's directions see the faces (cone, after
+// Crassin et al. 2011: each face by the area it shows them) or as the faces of the surface met
+// (surface): the wide read then averages only surfaces facing the way it faces, not the shaded
+// sides of whatever else its texels hold. The specular cone, alone in its lobe, always reads
+// as its directions see (accuracy-analysis.md).
 enum LightRead : int { LIGHT_READ_CONE = 0, LIGHT_READ_SURFACE = 1 };
 // voxel.cones: the diffuse cones each surface point traces (gi/voxel/ConeSet.h); PLAN is
 // resolved by render::applyPlan (19 on the adaptive plan, the thesis' 9 on the fixed); DENSE
