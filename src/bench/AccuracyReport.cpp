@@ -267,8 +267,8 @@ std::string accuracyMarkdown(const std::vector<SuiteSceneResult>& results,
         << " min; load average " << info.loadBefore << " before, " << info.loadAfter
         << " after.\n\n"
         << "Configurations: **direct** no GI; **voxel** the defaults; **voxel quality** "
-           "v=64, full-resolution trace, injection at 4v, 37 cones moved in elevation by the "
-           "dither, one level of up to 256^3 voxels (`voxel.one_level_limit`); **atlas** the "
+           "v=64, full-resolution trace, 37 cones moved in elevation by the dither, one level "
+           "of up to 256^3 voxels (`voxel.one_level_limit`); **atlas** the "
            "defaults, one frame; **atlas converged** "
            "`atlas.visibility=voxel`, accumulated to `atlas.target_samples`; **vpl** the "
            "defaults (`vpl.count` VPLs, cascade visibility, 4x4 interleaving).\n\n";

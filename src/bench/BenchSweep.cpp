@@ -122,8 +122,7 @@ void addVplSweep(std::vector<BenchConfiguration>& list, bool full) {
 } // namespace
 
 std::vector<SettingChange> voxelQualityPreset() {
-    return {{"voxel.resolution", "64"}, {"voxel.trace_scale", "1"},
-            {"voxel.inject_resolution", "256"}, {"voxel.cones", "37"},
+    return {{"voxel.resolution", "64"}, {"voxel.trace_scale", "1"}, {"voxel.cones", "37"},
             {"voxel.jitter_elevation", "1"}, {"voxel.one_level_limit", "256"}};
 }
 
@@ -206,7 +205,9 @@ std::vector<BenchConfiguration> benchConfigurations(const SweepOptions& options)
             0.25));
     // The sweep's fixed plan sets the levels the adaptive plan would size.
     std::vector<SettingChange> quality = voxelQualityPreset();
+    // The fixed plan injects at v pixels unless told: 4v gives its finest voxel four.
     quality.insert(quality.begin() + 1, {"voxel.cascades", "4"});
+    quality.push_back({"voxel.inject_resolution", "256"});
     quality.push_back({"voxel.coverage_max_axis", "1"});
     list.push_back(voxel(
             "preset quality (v64 l4 trace 1, max-axis, inject 4v, 37 cones)",

@@ -73,10 +73,11 @@ struct SweepOptions {
 [[nodiscard]] bool applyConfiguration(const BenchConfiguration& configuration, Settings& settings,
         std::string& error);
 
-// The voxel quality preset, under any plan: v=64, full-resolution trace, injection at 4v, 37
-// cones moved in elevation by the dither, and on the adaptive plan one level of up to 256^3
-// (the accuracy suite's; the bench's "preset quality" row adds four levels of the fixed
-// plan, which the one-level limit does not touch).
+// The voxel quality preset, under any plan: v=64, full-resolution trace, 37 cones moved in
+// elevation by the dither, and on the adaptive plan one level of up to 256^3 injected at the
+// plan's four light pixels per voxel (the accuracy suite's; the bench's "preset quality" row
+// adds four levels of the fixed plan, which the one-level limit does not touch, injected at
+// 4v).
 [[nodiscard]] std::vector<SettingChange> voxelQualityPreset();
 
 // The "short" voxel.max_distance for a scene: a quarter of its bounding-box diagonal, rounded
