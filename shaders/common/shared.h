@@ -463,7 +463,9 @@ struct GpuShadow {                      // std430, one per light
 struct GpuVpl {                         // std430, one virtual point light
     vec4 position;                      // xyz = world position (m), w = unused
     vec4 normal;                        // xyz = unit normal of its lit side, w = unused
-    vec4 flux;                          // rgb = flux it reflects (W, pre-exposed), w = unused
+    vec4 flux;                          // rgb = flux it reflects (W, pre-exposed), w = the
+                                        // surface it stands for (m^2; 0 = unknown: the
+                                        // second generation's)
 };
 
 struct VplUniforms {                    // std140
@@ -474,7 +476,10 @@ struct VplUniforms {                    // std140
                                         // scale (tiles^2), z = filter depth tolerance
                                         // (fraction of the depth), w = filter normal cosine
     vec4 rays;                          // x = how far vpl.visibility=bvh's rays start off both
-                                        // surfaces (m), yzw = unused
+                                        // surfaces (m), y = B per m^2 a VPL stands for
+                                        // where that exceeds gather.x (vpl.clamp = 0;
+                                        // 0 = gather.x for every VPL),
+                                        // zw = unused
 };
 
 struct SvoUniforms {                    // std140

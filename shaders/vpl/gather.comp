@@ -1,7 +1,9 @@
 // VPL gather (SEEDS.md section 4): the indirect irradiance at the surface of each pixel is the
 // light of every VPL, a Lambertian emitter of flux phi and radiant intensity phi/pi cos(theta_i):
 //   E_ind(x) = sum_i phi_i / pi * V * max(0, cos theta_x) * max(0, cos theta_i) / max(B, r^2),
-// B the clamp (vpl.clamp) that bounds the 1/r^2 spike of a VPL next to the receiver.
+// B the clamp (vpl.clamp) that bounds the 1/r^2 spike of a VPL next to the receiver: by default
+// the larger of the mean VPL's and one in proportion to the surface it stands for
+// (gi/vpl/VplGi.h).
 // Interleaved sampling (Keller and Heidrich 2001): pixel (x, y) uses only the VPLs of its
 // subset (x mod t) + t (y mod t) and scales them by t^2; the filter merges the t x t
 // neighbourhood, which holds every subset once.
@@ -55,7 +57,10 @@ void main() {
         float cosI = -dot(light.normal.xyz, dir);
         if (cosX <= 0.0 || cosI <= 0.0) continue;
         float visibility = vplVisibility(x, n, light.position.xyz, light.normal.xyz);
-        e += light.flux.rgb * (visibility * cosX * cosI / (PI * max(clampB, r2)));
+        // A VPL standing for more surface than the mean (one the view's importance drew
+        // sparsely, carrying more flux) is cut where it no longer stands for its own.
+        float b = max(clampB, vpl.rays.y * light.flux.w);
+        e += light.flux.rgb * (visibility * cosX * cosI / (PI * max(b, r2)));
         visible += visibility;
         facing += 1.0;
     }

@@ -120,6 +120,14 @@ std::vector<bench::TemporalConfiguration> configurations(const Settings& base, b
         list.push_back({name + " + filter", mode, filtered});
         if (!quick) list.push_back({name + " + filter, no clamp", mode, unclamped});
     }
+    if (quick) return list;
+    // VPLs drawn by the view's importance are drawn anew as the camera moves: the full form
+    // sets them beside the draw by flux alone, which keeps its VPLs.
+    Settings byFlux = plain;
+    byFlux.vpl.importance = false;
+    list.push_back({"vpl", render::GiMode::Vpl, plain});
+    list.push_back({"vpl + filter", render::GiMode::Vpl, filtered});
+    list.push_back({"vpl, drawn by flux alone", render::GiMode::Vpl, byFlux});
     return list;
 }
 

@@ -143,8 +143,9 @@ std::string usage(Command command) {
                "\n"
                "Temporal stability: the mean relative frame-to-frame change of the indirect term\n"
                "against the direct term's along slow camera paths (Sponza down the atrium at\n"
-               "10 cm per frame, the Cornell box sideways), in voxel and atlas mode with and\n"
-               "without gi.temporal_filter, and the trail the animated Cornell box's cube leaves.\n"
+               "10 cm per frame, the Cornell box sideways), in voxel and atlas mode (and VPL\n"
+               "mode in the full form) with and without gi.temporal_filter, and the trail the\n"
+               "animated Cornell box's cube leaves.\n"
                "Writes results-temporal.md and images/temporal_*.png to --out-dir (default\n"
                "docs). --quick: the Cornell box alone, small images, few frames (CI).\n";
     default:

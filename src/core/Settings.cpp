@@ -355,6 +355,10 @@ const std::vector<SettingSpec>& settingSpecs() {
                 1, 4096, [](Settings& s) -> int& { return s.vpl.svoBudgetMb; }),
         boolSetting("vpl.interleave", "4x4 interleaved VPL subsets merged by a geometry-aware filter",
                 [](Settings& s) -> bool& { return s.vpl.interleave; }),
+        boolSetting("vpl.importance",
+                "draw VPLs by flux times how much of their light the camera's view can receive "
+                "(redrawn as the camera moves; 0 = by flux alone)",
+                [](Settings& s) -> bool& { return s.vpl.importance; }),
         intSetting("vpl.rsm_resolution", "pixels per side of each reflective shadow map view", 8,
                 2048, [](Settings& s) -> int& { return s.vpl.rsmResolution; }),
         intSetting("vpl.bounces",

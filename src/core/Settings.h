@@ -148,6 +148,7 @@ struct VplSettings {
     int svoResolution = 128;      // vpl.svo_resolution: octree leaves per side (power of two)
     int svoBudgetMb = 256;        // vpl.svo_budget_mb: the octree's nodes may take this much
     bool interleave = true;       // vpl.interleave: 4x4 tiles, each pixel 1/16 of the VPLs
+    bool importance = true;       // vpl.importance: draw VPLs by flux x what the view receives
     int rsmResolution = 128;      // vpl.rsm_resolution: pixels per side of a light's RSM view
     int bounces = 1;              // vpl.bounces: 2 adds VPLs where the first ones' light lands
     int debugSubset = 0;          // vpl.debug_subset: the pixel class vpl-subset highlights

@@ -50,5 +50,19 @@ TEST(VplSampler, DrawsInProportionToFluxAndSkipsUnlitTexels) {
     EXPECT_TRUE(drawVpls({texel(0.0f, glm::vec3(0.0f))}, 10).empty());
 }
 
+TEST(VplSampler, EveryVplCarriesTheSurfaceItStandsFor) {
+    std::vector<RsmTexel> texels = {texel(0.0f, glm::vec3(3.0f)), texel(1.0f, glm::vec3(1.0f))};
+    texels[0].area = 0.3f;
+    texels[1].area = 0.5f;
+    const std::vector<shader::GpuVpl> vpls = drawVpls(texels, 100);
+    double area = 0.0;
+    for (const shader::GpuVpl& v : vpls) {
+        // 75 copies share the first texel's 0.3 m^2, 25 the second's 0.5 m^2.
+        EXPECT_FLOAT_EQ(v.flux.w, v.position.x == 0.0f ? 0.004f : 0.02f);
+        area += double(v.flux.w);
+    }
+    EXPECT_NEAR(area, 0.8, 1e-5);
+}
+
 } // namespace
 } // namespace gi::vpl

@@ -4,12 +4,15 @@
 // Outputs: position() (RGBA32F) and normal() (RGBA16F) at the render size.
 #pragma once
 
+#include "gi/vpl/VplImportance.h"
 #include "gl/GpuProfiler.h"
 #include "gl/Objects.h"
 #include "gl/ShaderLibrary.h"
 #include "scene/GpuScene.h"
 
 #include <glm/glm.hpp>
+
+#include <vector>
 
 namespace gi::vpl {
 
@@ -21,6 +24,9 @@ public:
     const gl::Texture& position() const { return mPosition; }
     const gl::Texture& normal() const { return mNormal; }
     glm::ivec2 size() const { return mSize; }
+    // The surfaces at the centres of a perSide x perSide grid of cells over the image, read
+    // back (waits for the GPU); cells whose centre sees no surface give none.
+    [[nodiscard]] std::vector<ViewSample> readSamples(int perSide) const;
 
 private:
     bool resize(glm::ivec2 size);

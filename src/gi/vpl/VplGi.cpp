@@ -1,5 +1,6 @@
 #include "gi/vpl/VplGi.h"
 
+#include "gi/vpl/VplImportance.h"
 #include "gi/vpl/VplSampler.h"
 #include "gl/Shared.h"
 
@@ -14,6 +15,32 @@ namespace {
 // with normals within about 25 degrees of its own.
 constexpr float kFilterDepthTolerance = 0.1f;
 constexpr float kFilterNormalCosine = 0.9f;
+// The view's importance for the VPLs' draw is read at the centres of this many cells per side
+// of the image: enough to find the surfaces the view holds, few enough that a moved camera's
+// redraw costs little next to the gather (texels x samples kernel evaluations on the CPU).
+constexpr int kViewSamplesPerSide = 16;
+// A camera that moved further than this share of the scene's diagonal, or turned or zoomed
+// further than these, since the VPLs were drawn for it draws them anew. The view's importance
+// decides only where VPLs are drawn, not what they send, so VPLs drawn for a nearby view stay
+// unbiased; redrawing at every small move would pay the draw each frame and make the VPLs
+// flicker as they jump between texels.
+constexpr float kRedrawDistanceShare = 0.05f;
+constexpr float kRedrawTurnCosine = 0.985f;   // about 10 degrees
+constexpr float kRedrawZoomRatio = 1.1f;
+
+glm::vec3 forwardOf(const scene::CameraView& camera) {
+    return -glm::vec3(camera.view[0][2], camera.view[1][2], camera.view[2][2]);
+}
+
+bool movedFarEnough(const scene::CameraView& drawnFor, const scene::CameraView& now,
+        float sceneDiagonal) {
+    const float zoom = now.yfov / std::max(drawnFor.yfov, 1e-6f);
+    return glm::distance(drawnFor.eye, now.eye) > kRedrawDistanceShare * sceneDiagonal ||
+           glm::dot(glm::normalize(forwardOf(drawnFor)), glm::normalize(forwardOf(now))) <
+                   kRedrawTurnCosine ||
+           zoom > kRedrawZoomRatio || zoom < 1.0f / kRedrawZoomRatio ||
+           std::abs(now.aspect - drawnFor.aspect) > 0.01f * drawnFor.aspect;
+}
 
 // The surface area (m^2) the light that reaches most of the scene lights: each light's texels
 // cover every surface it sees once, so summing over lights would count shared surfaces twice.
@@ -58,7 +85,8 @@ bool VplGi::configure(const Settings& settings, std::string& error) {
     const VplSettings& s = settings.vpl;
     if (!SvoVisibility::validate(s, error)) return false;
     if (s.count != mSettings.count || s.rsmResolution != mSettings.rsmResolution ||
-            s.bounces != mSettings.bounces || settings.glossyMaterials() != mGlossyMaterials) {
+            s.bounces != mSettings.bounces || s.importance != mSettings.importance ||
+            settings.glossyMaterials() != mGlossyMaterials) {
         mSource.valid = false;
     }
     mGlossyMaterials = settings.glossyMaterials();
@@ -94,37 +122,48 @@ void VplGi::addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrame
     mSecondGenerationCount = int(children.size());
 }
 
-void VplGi::resample(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
+void VplGi::renderReflectiveShadowMaps(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const std::vector<scene::LightView> views =
             scene::lightViews(in.lights, in.scene.bounds(), mSettings.rsmResolution);
     // The RSM readback waits for the GPU, so wall clock measures its draws too.
     const auto rsmStart = std::chrono::steady_clock::now();
-    const std::vector<RsmTexel> texels =
-            mRsm.execute(in.scene, views, mSettings.rsmResolution, mGlossyMaterials, profiler);
+    mTexels = mRsm.execute(in.scene, views, mSettings.rsmResolution, mGlossyMaterials, profiler);
     mLastResampling.rsmMs = millisecondsSince(rsmStart);
     mLastResampling.rsmViews = int(views.size());
-    mLastResampling.rsmTexels = texels.size();
+    mLastResampling.rsmTexels = mTexels.size();
+    mLitAreaPerVpl = largestLitArea(mTexels, in.lights.size()) / float(generationCounts().x);
+    mSource = {&in.scene, in.lights, in.scene.geometryVersion(),
+            in.occupancy ? in.occupancy->version : 0, true};
+}
+
+void VplGi::drawFromTexels(const GiFrameInputs& in, gl::GpuProfiler& profiler, bool announce) {
     const int firstGeneration = generationCounts().x;
     const auto samplingStart = std::chrono::steady_clock::now();
     std::vector<shader::GpuVpl> vpls;
     {
         gl::GpuScope scope(profiler, "vpl/sample");
-        vpls = drawVpls(texels, firstGeneration);
+        if (mSettings.importance) {
+            const std::vector<float> importance = viewImportance(
+                    mTexels, mGBuffer.readSamples(kViewSamplesPerSide), clampArea());
+            vpls = drawVpls(mTexels, importance, firstGeneration);
+        } else {
+            vpls = drawVpls(mTexels, firstGeneration);
+        }
     }
+    mDrawnFor = in.camera;
     mLastResampling.samplingMs = millisecondsSince(samplingStart);
     ++mLastResampling.resamples;
-    mLitAreaPerVpl = largestLitArea(texels, in.lights.size()) / float(firstGeneration);
     addSecondGeneration(vpls, in, profiler);
     mVplCount = int(vpls.size());
     // Keep a buffer of at least one VPL so the gather's binding is always valid.
     if (vpls.empty()) vpls.push_back({});
     mVpls = gl::createBuffer(vpls.size() * sizeof(shader::GpuVpl), vpls.data(), 0, "vpl/vpls");
-    mSource = {&in.scene, in.lights, in.scene.geometryVersion(),
-            in.occupancy ? in.occupancy->version : 0, true};
-    std::fprintf(stderr, "vpl: %d VPLs (%d of the second generation) from %zu lit RSM texels, "
+    if (!announce) return;
+    std::fprintf(stderr, "vpl: %d VPLs (%d of the second generation) from %zu lit RSM texels%s, "
                          "%.4g m^2 per VPL, clamp B %.4g m^2\n",
-            mVplCount, mSecondGenerationCount, texels.size(), double(mLitAreaPerVpl),
-            double(clampArea()));
+            mVplCount, mSecondGenerationCount, mTexels.size(),
+            mSettings.importance ? " by flux x the view's importance" : "",
+            double(mLitAreaPerVpl), double(clampArea()));
 }
 
 const OccupancyVolume* VplGi::visibilityOccupancy(const GiFrameInputs& in) {
@@ -153,7 +192,8 @@ void VplGi::writeUniforms(int visibility, int gatherOutput) {
     u.counts = glm::ivec4(mVplCount, tile, visibility, gatherOutput);
     u.gather = glm::vec4(clampArea(), float(tile * tile), kFilterDepthTolerance,
             kFilterNormalCosine);
-    u.rays = glm::vec4(mRayOffset, 0.0f, 0.0f, 0.0f);
+    const float clampPerArea = mSettings.clamp > 0.0f ? 0.0f : kClampPerVplArea;
+    u.rays = glm::vec4(mRayOffset, clampPerArea, 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
@@ -169,7 +209,12 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
             mSource.lights != in.lights || mSource.geometryVersion != in.scene.geometryVersion() ||
             (mSettings.bounces > 1 && in.occupancy &&
                     mSource.occupancyVersion != in.occupancy->version);
-    if (stale) resample(in, profiler);
+    // The G-buffer first: the importance of the VPLs' draw is read from it.
+    mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
+    if (stale) renderReflectiveShadowMaps(in, profiler);
+    const bool viewMoved = mSettings.importance &&
+            movedFarEnough(mDrawnFor, in.camera, glm::length(in.scene.bounds().size()));
+    if (stale || viewMoved) drawFromTexels(in, profiler, stale);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const int bvhRayIterations = visibilityBvh(in);
     mVisibility = occupancy ? VPL_VISIBILITY_CASCADE
@@ -180,7 +225,6 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     mDebugView = debugViewOf(in.debugView);
     writeUniforms(mVisibility, mDebugView == VPL_DEBUG_VISIBILITY ? VPL_GATHER_VISIBLE_FRACTION
                                                                   : VPL_GATHER_IRRADIANCE);
-    mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
     const int subsets = mSettings.interleave ? VPL_TILE * VPL_TILE : 1;
     mGather.execute({mGBuffer, mVpls, mUniforms, occupancy, octree,
                             (mVplCount + subsets - 1) / subsets, bvhRayIterations},

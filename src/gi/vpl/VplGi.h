@@ -7,16 +7,22 @@
 //      these VPLs through the voxel occupancy, each hit a VPL of the flux reflected there
 //      (VplBouncePass); the gather treats both generations alike;
 // every frame:
-//   3. the camera's G-buffer (VplGBufferPass),
+//   3. the camera's G-buffer (VplGBufferPass); with vpl.importance (the default) the VPLs are
+//      drawn in proportion to flux x the light the view's surfaces can receive from each texel
+//      (VplImportance), again when the camera has moved or turned far enough,
 //   4. the gather (VplGatherPass): E_ind = sum phi/pi V cos cos / max(B, r^2), each pixel of a
 //      4x4 tile using one sixteenth of the VPLs, V through the voxel occupancy
 //      (vpl.visibility=cascade), the sparse voxel octree (svo, SvoVisibility) or 1,
 //   5. the geometry-aware merge of the tiles (VplFilterPass) -> screen-space E_ind.
-// vpl.clamp = 0 takes B = kClampPerVplArea x the surface area one VPL stands for (the area the
-// most widely lit light reaches, over the first generation's count): the 1/r^2 spike is cut where one VPL no
-// longer stands for the light around it, which scales with the scene and with the VPL count
-// (a fraction of the scene's diagonal clamped a 40 m atrium over 1.2 m and lost a fifth of
-// its indirect light); results-vpl.md measures what the clamp costs in energy.
+// vpl.clamp = 0 takes B = kClampPerVplArea x the surface area one VPL stands for: the 1/r^2
+// spike is cut where one VPL no longer stands for the light around it, which scales with the
+// scene and with the VPL count (a fraction of the scene's diagonal clamped a 40 m atrium over
+// 1.2 m and lost a fifth of its indirect light). That area is the mean's (the area the most
+// widely lit light reaches, over the first generation's count; clampArea()), or a VPL's own
+// (its texel's area over the copies drawn of it) where that is larger: the VPLs the view's
+// importance draws sparsely carry the light of more surface. Cutting the densely drawn ones
+// closer than the mean's B spiked next to sunlit corners (Sponza's sun 0.495 -> 0.837);
+// results-vpl.md measures what the clamp costs in energy.
 #pragma once
 
 #include "gi/GiTechnique.h"
@@ -64,7 +70,11 @@ private:
         bool valid = false;
     };
 
-    void resample(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    // Renders the lights' RSMs and reads their lit texels back (when lights or geometry change).
+    void renderReflectiveShadowMaps(const GiFrameInputs& in, gl::GpuProfiler& profiler);
+    // Draws the VPLs from the texels: by flux, or by flux x the view's importance
+    // (vpl.importance), which a moved camera redraws; `announce` prints what was drawn.
+    void drawFromTexels(const GiFrameInputs& in, gl::GpuProfiler& profiler, bool announce);
     // vpl.count split between the generations: {first-generation VPLs, bounce rays}.
     glm::ivec2 generationCounts() const;
     void addSecondGeneration(std::vector<shader::GpuVpl>& vpls, const GiFrameInputs& in,
@@ -86,6 +96,8 @@ private:
     float mRayOffset = 0.0f;                 // VplUniforms rays.x
     int mDebugView = -1;   // VPL_DEBUG_* shown this frame, -1 = none
     VplReport mLastResampling;   // its RSM and sampling fields
+    std::vector<RsmTexel> mTexels;   // the lit RSM texels the VPLs are drawn from
+    scene::CameraView mDrawnFor;     // the camera the VPLs were last drawn for
 
     gl::Buffer mVpls;
     gl::Buffer mUniforms;

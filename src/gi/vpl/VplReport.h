@@ -19,8 +19,9 @@ namespace gi::vpl {
 struct VplReport {
     int count = 0;               // VPLs drawn at the last resampling, both generations
     int secondGeneration = 0;    // of them found by vpl.bounces=2's rays
-    float clampArea = 0.0f;      // B of 1 / max(B, r^2), m^2
-    bool clampFromScene = true;  // vpl.clamp = 0: B follows the lit area per VPL
+    float clampArea = 0.0f;      // B of 1 / max(B, r^2), m^2 (per VPL when clampFromScene:
+                                 // that of a VPL standing for the mean lit area)
+    bool clampFromScene = true;  // vpl.clamp = 0: B follows the surface each VPL stands for
     std::string visibility;      // vpl.visibility's name, or "none" when the frame had no
                                  // occupancy to march
     bool interleave = true;
