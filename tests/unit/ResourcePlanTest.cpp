@@ -194,14 +194,14 @@ TEST(ResourcePlan, ApplyWritesThePlanIntoTheSettings) {
     EXPECT_EQ(unchanged.voxel.extent, 0.0f) << "fixed plans keep deriving the extent at run time";
 }
 
-TEST(ResourcePlan, InjectionHasFourLightPixelsPerFinestVoxel) {
+TEST(ResourcePlan, InjectionHasTwoLightPixelsPerFinestVoxel) {
     const scene::Scene box = test::loadCornellBox();
     const ResourcePlan plan = planResources(box, box.lights, adaptive(32), startEye(box));
     const glm::vec3 size = box.bounds.size();
     const float longest = std::max(size.x, std::max(size.y, size.z));
     const float lightPixel = longest / float(plan.voxel.injectResolution);
-    EXPECT_LE(lightPixel, 0.25f * plan.voxel.voxelSize(0));
-    EXPECT_GT(lightPixel, 0.225f * plan.voxel.voxelSize(0)) << "no more pixels than that";
+    EXPECT_LE(lightPixel, 0.5f * plan.voxel.voxelSize(0));
+    EXPECT_GT(lightPixel, 0.45f * plan.voxel.voxelSize(0)) << "no more pixels than that";
     EXPECT_EQ(applyPlan(adaptive(32), plan).voxel.injectResolution, plan.voxel.injectResolution);
     // A resolution the user sets is kept; the fixed plan leaves 0, which means v (the thesis).
     Settings given = adaptive(32);
