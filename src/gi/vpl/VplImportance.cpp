@@ -9,7 +9,8 @@ double fluxWeight(const RsmTexel& texel) {
     return double(texel.flux.r) + double(texel.flux.g) + double(texel.flux.b);
 }
 
-// The samples as separate arrays, so the loop over them has no branch and vectorizes.
+// The samples as separate arrays, read in order by a loop over them without a branch (the
+// compiler may vectorize it).
 struct SampleArrays {
     std::vector<float> px, py, pz, nx, ny, nz;
     explicit SampleArrays(const std::vector<ViewSample>& samples) {
