@@ -72,19 +72,21 @@ void VplGBufferPass::execute(const scene::GpuScene& scene, const gl::Buffer& fra
 std::vector<ViewSample> VplGBufferPass::readSamples(int perSide) const {
     std::vector<ViewSample> samples;
     if (mSize.x <= 0 || mSize.y <= 0 || perSide <= 0) return samples;
-    const std::size_t pixels = std::size_t(mSize.x) * std::size_t(mSize.y);
-    std::vector<glm::vec4> position(pixels), normal(pixels);
-    const GLsizei bytes = GLsizei(pixels * sizeof(glm::vec4));
-    glGetTextureImage(mPosition.id(), 0, GL_RGBA, GL_FLOAT, bytes, position.data());
-    glGetTextureImage(mNormal.id(), 0, GL_RGBA, GL_FLOAT, bytes, normal.data());
+    // Only the rows that hold cell centres are read back.
+    std::vector<glm::vec4> position(std::size_t(mSize.x)), normal(std::size_t(mSize.x));
+    const GLsizei bytes = GLsizei(position.size() * sizeof(glm::vec4));
     samples.reserve(std::size_t(perSide) * std::size_t(perSide));
     for (int cy = 0; cy < perSide; ++cy) {
+        const int y = std::min(mSize.y - 1, int((cy + 0.5f) * float(mSize.y) / float(perSide)));
+        glGetTextureSubImage(mPosition.id(), 0, 0, y, 0, mSize.x, 1, 1, GL_RGBA, GL_FLOAT, bytes,
+                position.data());
+        glGetTextureSubImage(mNormal.id(), 0, 0, y, 0, mSize.x, 1, 1, GL_RGBA, GL_FLOAT, bytes,
+                normal.data());
         for (int cx = 0; cx < perSide; ++cx) {
-            const int x = std::min(mSize.x - 1, int((cx + 0.5f) * float(mSize.x) / float(perSide)));
-            const int y = std::min(mSize.y - 1, int((cy + 0.5f) * float(mSize.y) / float(perSide)));
-            const std::size_t i = std::size_t(y) * std::size_t(mSize.x) + std::size_t(x);
-            if (!(position[i].w > 0.0f)) continue;   // cleared: no surface there
-            samples.push_back({glm::vec3(position[i]), glm::vec3(normal[i])});
+            const auto x = std::size_t(
+                    std::min(mSize.x - 1, int((cx + 0.5f) * float(mSize.x) / float(perSide))));
+            if (!(position[x].w > 0.0f)) continue;   // cleared: no surface there
+            samples.push_back({glm::vec3(position[x]), glm::vec3(normal[x])});
         }
     }
     return samples;
