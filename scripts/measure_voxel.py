@@ -180,7 +180,9 @@ def measure_memory(say):
     say("Five textures of v^3 l texels: albedo, irradiance and the per-light helper in RGBA16F,")
     say("normals in RGBA8_SNORM, the lock in R32UI (32 bytes per voxel), and the RGBA16F pyramid")
     say("of the coarsest level's light ((v/2)^3 texels and their mips). Thesis: 3.46 MB at")
-    say("v=32, l=3; 27 MB at v=64; 216 MB at v=128; 36 MB at v=64, l=4.\n")
+    say("v=32, l=3; 27 MB at v=64; 216 MB at v=128; 36 MB at v=64, l=4. Not counted: the")
+    say("fixed-point flux sums injection adds to (three R32UI, 12 bytes per voxel), which the")
+    say("thesis' float sums under the lock do without.\n")
     say("| v | l=3 | l=4 |")
     say("|---|---|---|")
     for v in (32, 64, 128):

@@ -124,8 +124,8 @@
                                         // (voxel sizes)
 #define BIND_IMG_VOXEL_IRRADIANCE   2   // rgba16f, rgb = E summed over lights (W/m^2),
                                         // a = surface area in the voxel / voxel face area
-#define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = flux / voxel face area (INJECT_AREA)
-                                        // or the current light's mean E (INJECT_FRAGMENT)
+#define BIND_IMG_VOXEL_HELPER       3   // rgba16f, rgb = the current light's mean E
+                                        // (INJECT_FRAGMENT) or what a bounce gathered
 #define BIND_IMG_VOXEL_LOCK         4   // r32ui, bit 0 = spinlock, bits 1..31 = fragment count
 #define BIND_IMG_FILTER_TARGET      5   // rgba16f, filtered E_ind + view depth
 #define BIND_IMG_VOXEL_PYRAMID_SOURCE 6 // rgba16f, pyramid mip m-1 read while mip m is built
@@ -133,6 +133,9 @@
                                         // voxel's own cones gathered (the pyramid source's
                                         // unit: no pass binds both)
 #define BIND_IMG_VOXEL_PYRAMID      7   // rgba16f, pyramid mip m being built
+#define BIND_IMG_VOXEL_FLUX_SUM     6   // r32ui (3v, v, v*l), INJECT_AREA: x-slab c = channel c
+                                        // of the flux / voxel face area summed in fixed point
+                                        // (voxel_flux_sum.glsl; only injection binds it)
 #define BIND_IMG_VOXEL_DISTANCE_X   6   // r8ui (v^3), the empty-distance pass' distances along x
 #define BIND_IMG_VOXEL_DISTANCE_XY  7   // r8ui (v^3), ... over x and y (the pyramid's units: no
                                         // pass binds both)
@@ -251,6 +254,9 @@
 #define LOC_INJECT_FOOTPRINT        9   // float, one pixel of the light view: sr on the axis
                                         // (perspective) or m^2 (orthographic)
 #define LOC_INJECT_LIGHT            10  // int, index into GpuLight[] of the injected light
+#define LOC_INJECT_FLUX_SUM         37  // vec2, x = fixed-point units per unit of flux / voxel
+                                        // face area (fluxSumScale, InjectPass.h), y = the
+                                        // light view's ordinal (seeds the rounding)
 #define LOC_PRESENT_EXPOSURE        11  // float, display exposure: 2^EV or the auto exposure
 #define LOC_PRESENT_CURVE           12  // int, TONE_CURVE_NONE or TONE_CURVE_FILMIC
 #define LOC_LINESPACE_LEVEL         13  // int, N-tree level an occupancy reduction writes

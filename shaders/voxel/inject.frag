@@ -10,10 +10,12 @@
 // over-weights surfaces close to the light (a ceiling 1 cm above a point light reads its
 // peak irradiance) and voxels the light sees only partly read the lit part's irradiance.
 // INJECT_AREA: each fragment carries the flux through its light pixel, phi = E * A (A the
-// surface area the pixel covers, light_view.glsl), and the voxel's irradiance is the summed flux over the surface area voxelization measured:
-// the area-weighted mean irradiance of the surfaces in the voxel, lit or not.
-// With voxel.anisotropic the flux is also summed per face of the voxel, projected onto the
-// faces the lit side faces (directional_build.comp).
+// surface area the pixel covers, light_view.glsl), and the voxel's irradiance is the summed
+// flux over the surface area voxelization measured: the area-weighted mean irradiance of the
+// surfaces in the voxel, lit or not. The sum is in fixed point (voxel_flux_sum.glsl), the
+// same whatever order fragments arrive in. With voxel.anisotropic the flux is also summed per
+// face of the voxel, projected onto the faces the lit side faces (directional_build.comp),
+// under the voxel's lock.
 #include "../common/voxel_cascade.glsl"
 
 layout(early_fragment_tests) in;
@@ -23,6 +25,8 @@ layout(early_fragment_tests) in;
 #include "../common/vertex_data.glsl"
 #define VOXEL_DIRECTIONAL_SUMS
 #include "voxel_directional.glsl"
+#define VOXEL_FLUX_SUM_ADD
+#include "voxel_flux_sum.glsl"
 #include "voxel_lock.glsl"
 #include "voxel_reflectance.glsl"
 
@@ -57,9 +61,8 @@ void main() {
     float area = lightPixelArea(viewAxis, pixelFootprint, lit, max(dot(n, lit.toLight), 0.05));
     float size = levelVoxelSize(level);
     vec3 flux = e * area / (size * size);
-    VOXEL_LOCKED_AVERAGE(texel, {
-        vec4 previous = imageLoad(voxelHelper, texel);
-        imageStore(voxelHelper, texel, roundToHalf(vec4(previous.rgb + flux, 1.0), dither));
-        if (anisotropicKind()) addToFacingFaces(texel, n, vec4(flux, 0.0), dither);
-    })
+    addToFluxSum(texel, flux);
+    if (anisotropicKind()) {
+        VOXEL_LOCKED_AVERAGE(texel, { addToFacingFaces(texel, n, vec4(flux, 0.0), dither); })
+    }
 }

@@ -4,14 +4,15 @@
 // (the thesis keeps the mean over lights and multiplies by their count: the same sum).
 // INJECT_AREA, once after all lights, over every occupied voxel: the voxel's coverage
 // becomes its surface area in units of its face area (at most 1) and its irradiance the
-// summed flux over max(area, face area). A voxel a surface only grazes thus stays
-// translucent and dim instead of turning into an opaque cube glowing with the flux of a
-// whole light pixel. Albedo and irradiance are both stored premultiplied by coverage, as
+// summed flux (voxel_flux_sum.glsl) over max(area, face area). A voxel a surface only grazes
+// thus stays translucent and dim instead of turning into an opaque cube glowing with the flux
+// of a whole light pixel. Albedo and irradiance are both stored premultiplied by coverage, as
 // propagation and the filtered reads of cone tracing expect (an empty neighbour then
 // lowers a trilinear read's coverage, not the albedo it returns).
 // Both clear the helper.
 #include "../common/constants.glsl"
 #include "../common/voxel_cascade.glsl"
+#include "voxel_flux_sum.glsl"
 
 layout(local_size_x = VOXEL_LOCAL_SIZE, local_size_y = VOXEL_LOCAL_SIZE, local_size_z = VOXEL_LOCAL_SIZE) in;
 
@@ -31,7 +32,7 @@ void main() {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         float coverage = min(area, 1.0);
         imageStore(voxelAlbedo, texel, vec4(albedo.rgb * coverage, coverage));
-        total = helper.rgb / max(area, 1.0);
+        total = fluxSumAt(texel) / max(area, 1.0);
     } else {
         if (helper.a == 0.0) return;
         total = current.rgb + helper.rgb;

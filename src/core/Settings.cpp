@@ -214,7 +214,7 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "voxel.multiplier (0: one raster over the coarsest level, which gives the finest "
                 "of L levels 2^(L-1) / voxel.multiplier raster pixels per voxel edge)",
                 [](Settings& s) -> bool& { return s.voxel.rasterPerLevel; }),
-        intSetting("voxel.inject_resolution", "light-view resolution for injection (0 = two pixels per finest voxel across the scene with render.plan=adaptive, voxel.resolution with fixed)",
+        intSetting("voxel.inject_resolution", "light-view resolution for injection (0 = four pixels per finest voxel across the scene with render.plan=adaptive, voxel.resolution with fixed)",
                 0, 4096, [](Settings& s) -> int& { return s.voxel.injectResolution; }),
         boolSetting("voxel.inject_fragment_mean",
                 "inject the thesis' mean over light fragments (0 = flux / surface area)",

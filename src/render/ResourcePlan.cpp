@@ -22,7 +22,7 @@ constexpr float kCompactSlack = 1.25f;
 constexpr double kAtlasFill = 0.5;
 // Light-view pixels per finest voxel edge for injection, and the most an adaptive plan asks
 // for (a light's views are rasterized at this size whenever its light changes).
-constexpr float kInjectPixelsPerVoxel = 2.0f;
+constexpr float kInjectPixelsPerVoxel = 4.0f;
 constexpr int kMaxAdaptiveInject = 1024;
 
 std::size_t sum(const std::vector<gl::MemoryItem>& items) {
@@ -124,12 +124,10 @@ VoxelPlan adaptiveVoxelPlan(const scene::Aabb& bounds, const VoxelSettings& s) {
 
 // Light-view pixels for injection: a fragment lands in one finest voxel, so a light pixel
 // larger than the finest voxel leaves voxels between fragments dark (rows of lit and unlit
-// voxels across a sunlit floor). Two pixels per finest voxel across the longest side. Which
-// voxel a pixel's flux lands in still aliases with the view's size (Sponza's indirect energy
-// moves by 4 % between neighbouring sizes; from four pixels per voxel it holds), but four
-// make enough fragments contend for one voxel's lock that the order of the stochastically
-// rounded half-float sums, and with it the image, changes from run to run
-// (accuracy-analysis.md, 'Light injection: two pixels per voxel, and what four would give').
+// voxels across a sunlit floor). Four pixels per finest voxel across the longest side: with
+// two, which voxel a pixel's flux lands in still aliased with the view's size enough to move
+// Sponza's indirect energy by 4 % between neighbouring sizes; from four it holds
+// (accuracy-analysis.md, 'Light injection summed in fixed point, four pixels per voxel').
 int adaptiveInjectResolution(const scene::Aabb& bounds, const VoxelPlan& plan,
         const VoxelSettings& s) {
     if (s.injectResolution > 0) return s.injectResolution;

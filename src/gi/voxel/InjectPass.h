@@ -29,6 +29,16 @@ using LightView = scene::LightView;
 [[nodiscard]] std::vector<LightView> injectionViews(const std::vector<scene::Light>& lights,
         const CascadeVolume& volume, const scene::Aabb& sceneBounds, int resolution);
 
+// Fixed-point units per unit of flux / voxel face area for the sums of INJECT_AREA
+// (voxel_flux_sum.glsl): the largest power of two at which no voxel's sum can pass 2^31,
+// even if every pixel of every view (`resolution` per side) carried its light's strongest
+// flux (lightStrength x footprint, 8 times over for the glTF BRDF's reflectance at an angle)
+// into one voxel of the finest level (edge `finestVoxel`, m), the lights scaled by the GPU's
+// pre-exposure (GpuScene::exposure). Resolution is thus relative to the lights' whole flux,
+// whatever their units; 1 when no view carries flux.
+[[nodiscard]] double fluxSumScale(const std::vector<scene::Light>& lights,
+        const std::vector<LightView>& views, int resolution, float finestVoxel, float exposure);
+
 class InjectPass {
 public:
     struct Inputs {
@@ -37,10 +47,11 @@ public:
         const gl::Buffer& voxelUniforms;          // VoxelUniforms, std140: placement, modes
         int resolution;                           // light-view pixels per side
         bool fragmentMean;                        // INJECT_FRAGMENT: finalize after each light
+        double fluxScale;                         // INJECT_AREA: fluxSumScale
     };
     struct Outputs {
-        // irradiance (rgba16f, W/m^2 x coverage, summed over lights); helper and lock are
-        // scratch, albedo is read for the coverage
+        // irradiance (rgba16f, W/m^2 x coverage, summed over lights); helper, flux sums and
+        // lock are scratch, albedo is read for the coverage
         const VoxelTextures& textures;
     };
 
@@ -48,8 +59,8 @@ public:
     void execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler);
 
 private:
-    // Sets one light view's matrix, axis, footprint and light on both programs.
-    void setView(const LightView& view) const;
+    // Sets light view number `ordinal`'s matrix, axis, footprint and light on both programs.
+    void setView(const LightView& view, std::size_t ordinal, double fluxScale) const;
     void finalize(const Inputs& in, const VoxelTextures& textures, gl::GpuProfiler& profiler);
 
     gl::ProgramRef mDepthProgram, mInjectProgram, mFinalizeProgram;

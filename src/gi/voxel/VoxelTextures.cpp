@@ -30,6 +30,7 @@ void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces)
     irradiance = createVolume(GL_RGBA16F, size, "voxel/irradiance");
     helper = createVolume(GL_RGBA16F, size, "voxel/helper");
     lock = createVolume(GL_R32UI, size, "voxel/lock");
+    fluxSum = createVolume(GL_R32UI, {3 * v, v, v * l}, "voxel/flux_sum");
     gathered = bounces ? createVolume(GL_RGBA16F, size, "voxel/gathered") : gl::Texture();
     for (gl::Texture& scratch : distanceScratch) {
         scratch = createVolume(GL_R8UI, glm::ivec3(v), "voxel/distance_scratch");
@@ -56,7 +57,9 @@ void VoxelTextures::clear() const {
     for (const gl::Texture* t : {&albedo, &normal, &irradiance, &helper}) {
         glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
     }
-    glClearTexImage(lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    for (const gl::Texture* t : {&lock, &fluxSum}) {
+        glClearTexImage(t->id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    }
     if (anisotropic) glClearTexImage(directional.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
 }
 
@@ -69,6 +72,7 @@ std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotro
             {"voxel/irradiance", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/helper", gl::textureBytes(GL_RGBA16F, size, 1)},
             {"voxel/lock", gl::textureBytes(GL_R32UI, size, 1)},
+            {"voxel/flux_sum", gl::textureBytes(GL_R32UI, {3 * v, v, v * l}, 1)},
             {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * VOXEL_FACES, v / 2, v / 2},
                     gl::fullMipCount(v / 2))}};
     if (bounces) items.push_back({"voxel/gathered", gl::textureBytes(GL_RGBA16F, size, 1)});

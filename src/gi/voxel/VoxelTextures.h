@@ -2,6 +2,8 @@
 // k. Albedo, irradiance and the per-light helper are RGBA16F; normals RGBA8_SNORM (they only
 // decide whether a voxel faces a cone); the lock is R32UI (spinlock bit + fragment count).
 // 32 bytes per voxel: 3.15 MB at v=32, l=3, under the thesis' 3.46 MB for the same data.
+// Injection sums flux in fixed point, three R32UI per voxel (12 more bytes: 1.18 MB at v=32,
+// l=3), so that the sum does not depend on the order fragments arrive in.
 // Beyond the thesis, a mipmapped RGBA16F pyramid of the coarsest level, (v/2)^3 at mip 0,
 // holds the reflected light over wider footprints (37 KB at v=32 beside the cascade's 3.15 MB);
 // two scratch bytes per coarsest voxel serve EmptyDistancePass (64 KB).
@@ -25,6 +27,8 @@ struct VoxelTextures {
     gl::Texture irradiance;   // rgb = sum over lights of E (W/m^2), premultiplied by coverage
     gl::Texture helper;       // rgb = current light's mean E, a = 1 where the light wrote
     gl::Texture lock;         // bit 0 = spinlock, bits 1..31 = values averaged
+    gl::Texture fluxSum;      // (3v, v, v*l) R32UI, INJECT_AREA: x-slab c = channel c of the
+                              // injected flux / face area in fixed point (voxel_flux_sum.glsl)
     gl::Texture pyramid;      // mip m: coarsest level averaged over 2^(m+1) voxels per axis,
                               // rgb = rho E x coverage (W/m^2), a = coverage; anisotropic:
                               // 6 x-slabs, one per face, as `directional`

@@ -73,11 +73,11 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 " exceeds the largest viewport " + std::to_string(maxViewport[0]);
         return false;
     }
-    // 32 bytes per voxel, 80 anisotropic, 8 more for further bounces (VoxelTextures.h);
+    // 44 bytes per voxel, 92 anisotropic, 8 more for further bounces (VoxelTextures.h);
     // refuse before allocating rather than let the driver fail (or swap) halfway through a
     // frame.
     const double bytesPerVoxel =
-            (s.anisotropic ? 80.0 : 32.0) + (settings.giBounces > 1 ? 8.0 : 0.0);
+            (s.anisotropic ? 92.0 : 44.0) + (settings.giBounces > 1 ? 8.0 : 0.0);
     const double bytes = bytesPerVoxel * std::pow(double(s.resolution), 3.0) * double(s.levels);
     if (!gl::fitsResourceBudget("voxel.resolution " + std::to_string(s.resolution) +
                     " with voxel.cascades " + std::to_string(s.levels) + " (voxel textures)",
@@ -254,7 +254,10 @@ void VoxelizationManager::injectAndPropagate(const GiFrameInputs& in, gl::GpuPro
                                                                 : mSettings.resolution;
     const std::vector<LightView> views =
             injectionViews(in.lights, mVolume, mSceneBounds, injectResolution);
-    mInject.execute({in.scene, views, mUniforms, injectResolution, mSettings.injectFragmentMean},
+    const double fluxScale = fluxSumScale(in.lights, views, injectResolution,
+            mVolume.voxelSize(0), in.scene.exposure());
+    mInject.execute({in.scene, views, mUniforms, injectResolution, mSettings.injectFragmentMean,
+                            fluxScale},
             {mTextures}, profiler);
     mPropagate.execute({mUniforms}, {mTextures}, profiler);
     if (mTextures.anisotropic) mDirectional.execute({mUniforms, mTextures}, {mTextures}, profiler);
