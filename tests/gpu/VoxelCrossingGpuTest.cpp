@@ -57,18 +57,11 @@ scene::Scene wallOnSunlitFloor() {
 // corner, where the floor's light comes from within a voxel or two, is another question).
 std::vector<bool> upperWallPixels(const scene::Scene& scene) {
     const scene::CameraView camera = scene::cameraFromScene(scene.cameras[0], 1.0f, scene.bounds);
-    const glm::mat4 clipToWorld = glm::inverse(camera.viewProjection());
     std::vector<bool> mask(std::size_t(kSize * kSize), false);
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            const glm::vec2 ndc((float(x) + 0.5f) / float(kSize) * 2.0f - 1.0f,
-                    1.0f - (float(y) + 0.5f) / float(kSize) * 2.0f);
-            const glm::vec4 nearPoint = clipToWorld * glm::vec4(ndc, -1.0f, 1.0f);
-            const glm::vec4 farPoint = clipToWorld * glm::vec4(ndc, 1.0f, 1.0f);
-            const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w;
-            const glm::vec3 b = glm::vec3(farPoint) / farPoint.w;
-            if (a.z * b.z > 0.0f) continue;
-            const glm::vec3 p = a + (b - a) * (a.z / (a.z - b.z));
+            glm::vec3 p;
+            if (!pixelOnPlane(camera, kSize, kSize, x, y, 2, 0.0f, p)) continue;
             mask[std::size_t(y * kSize + x)] = std::abs(p.x) < 0.9f * kWallHalfWidth &&
                     p.y > 0.25f * kWallHeight && p.y < 0.95f * kWallHeight;
         }

@@ -92,18 +92,25 @@ core::Image renderScene(const scene::Scene& scene, const RenderRequest& request)
 
 namespace gi::test {
 
-bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x, int y,
-        float planeY, glm::vec3& point) {
+bool pixelOnPlane(const scene::CameraView& camera, int width, int height, int x, int y,
+        int axis, float value, glm::vec3& point) {
     const glm::mat4 clipToWorld = glm::inverse(camera.viewProjection());
     const glm::vec2 ndc((float(x) + 0.5f) / float(width) * 2.0f - 1.0f,
             1.0f - (float(y) + 0.5f) / float(height) * 2.0f);
     const glm::vec4 nearPoint = clipToWorld * glm::vec4(ndc, -1.0f, 1.0f);
     const glm::vec4 farPoint = clipToWorld * glm::vec4(ndc, 1.0f, 1.0f);
-    const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w - glm::vec3(0.0f, planeY, 0.0f);
-    const glm::vec3 b = glm::vec3(farPoint) / farPoint.w - glm::vec3(0.0f, planeY, 0.0f);
-    if (a.y * b.y > 0.0f) return false;
-    point = a + (b - a) * (a.y / (a.y - b.y)) + glm::vec3(0.0f, planeY, 0.0f);
+    const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w;
+    const glm::vec3 b = glm::vec3(farPoint) / farPoint.w;
+    const float da = a[axis] - value, db = b[axis] - value;
+    if (da * db > 0.0f) return false;
+    point = a + (b - a) * (da / (da - db));
+    point[axis] = value;
     return true;
+}
+
+bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x, int y,
+        float planeY, glm::vec3& point) {
+    return pixelOnPlane(camera, width, height, x, y, 1, planeY, point);
 }
 
 double sumOverMask(const core::Image& image, const std::vector<bool>& mask) {

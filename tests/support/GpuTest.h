@@ -59,8 +59,12 @@ struct RenderRequest {
 [[nodiscard]] std::size_t bytesWithPrefix(const std::vector<gl::MemoryItem>& items,
         const std::string& prefix);
 
-// World-space point seen through the centre of pixel (x, y) on the plane y = planeY, or
-// false if the pixel's ray misses it. Images run top to bottom.
+// World-space point seen through the centre of pixel (x, y) on the plane where coordinate
+// `axis` (0 = x, 1 = y, 2 = z) equals `value`, or false if the pixel's ray misses it.
+// Images run top to bottom.
+[[nodiscard]] bool pixelOnPlane(const scene::CameraView& camera, int width, int height, int x,
+        int y, int axis, float value, glm::vec3& point);
+// pixelOnPlane on the plane y = planeY.
 [[nodiscard]] bool pixelOnPlaneY(const scene::CameraView& camera, int width, int height, int x,
         int y, float planeY, glm::vec3& point);
 
