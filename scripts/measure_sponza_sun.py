@@ -1,18 +1,18 @@
 #!/usr/bin/python3
 """Voxel GI's indirect energy in Sponza under a sun at three elevations, against the path
-tracer, for the light injection and voxel resolutions that decide it: the default plan (two
-light pixels per finest voxel), the thesis' injection of voxel.resolution pixels over the
-scene, and 64^3 and 128^3 levels (the plan keeps the coarsest level at twice the scene's
-longest side, so these halve and quarter every level's voxel). The camera is the suite's
-sponza_sun view (assets/scene_suite/README.md); the indirect term at 160x90,
-reference.spp=512 (cached on disk), material.specular=0.
+tracer, for the light injection and voxel sizes that decide it: the defaults (one level of
+128^3 voxels of 0.32 m, four light pixels per finest voxel), injection at two light pixels
+per voxel (233), the diffuse cones reading the surface they meet (voxel.light_read=surface)
+and one level of 256^3 voxels of 0.16 m (voxel.resolution=64, voxel.one_level_limit=256: the
+quality preset's level). The camera is the suite's sponza_sun view (assets/scene_suite/README.md); the
+indirect term at 160x90, reference.spp=512 (cached on disk), material.specular=0.
 
 Usage: /usr/bin/python3 scripts/measure_sponza_sun.py [--bin build/voxatlas] [--sponza PATH]
        [--picture docs/images/sponza_sun_voxel_size.png] [--light-read]
 Prints a markdown table (energy and relative RMSE of every configuration at every
 elevation) and writes the picture: one row per sun, left to right the path tracer, the
-default plan, 64^3 and 128^3, each row at the exposure that shows the path tracer's mean at
-0.2. With --light-read the configurations are the default, anisotropic voxels and anisotropic
+defaults, the surface read and 256^3, each row at the exposure that shows the path tracer's
+mean at 0.2. With --light-read the configurations are the default, anisotropic voxels and anisotropic
 voxels read as the surface met faces (voxel.light_read=surface), all three pictured
 (docs/images/sponza_sun_light_read.png).
 """
@@ -28,10 +28,11 @@ SUNS = [("0.2,-1,0.3", "the suite's sun (elevation 70 degrees)"),
         ("0.1,-1,0.1", "elevation 82 degrees"),
         ("0,-1,0", "straight down")]
 BASE = {"render.plan": "adaptive", "material.specular": 0}
-CONFIGS = [("default plan", {}),
-           ("injection at voxel.resolution (the thesis)", {"voxel.inject_resolution": 32}),
-           ("voxel.resolution=64", {"voxel.resolution": 64}),
-           ("voxel.resolution=128", {"voxel.resolution": 128})]
+CONFIGS = [("defaults (128^3 of 0.32 m, four light pixels per voxel)", {}),
+           ("two light pixels per voxel", {"voxel.inject_resolution": 233}),
+           ("voxel.light_read=surface", {"voxel.light_read": "surface"}),
+           ("voxel.resolution=64 voxel.one_level_limit=256 (256^3 of 0.16 m)",
+            {"voxel.resolution": 64, "voxel.one_level_limit": 256})]
 PICTURED = [0, 2, 3]
 # --light-read: the anisotropic voxels' two light reads (voxel.light_read) beside the default.
 LIGHT_READ_CONFIGS = [("default (isotropic voxels)", {}),
