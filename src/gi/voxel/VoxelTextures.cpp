@@ -57,9 +57,8 @@ void VoxelTextures::clear() const {
     for (const gl::Texture* t : {&albedo, &normal, &irradiance, &helper}) {
         glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
     }
-    for (const gl::Texture* t : {&lock, &fluxSum}) {
-        glClearTexImage(t->id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    }
+    // The flux sums are cleared by InjectPass, before each injection.
+    glClearTexImage(lock.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     if (anisotropic) glClearTexImage(directional.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
 }
 
