@@ -73,9 +73,10 @@ std::vector<std::string> missedTargets(const SuiteScore& score) {
         misses.push_back("energy " + number(score.energyIndirect) + " > " +
                          number(*t.maxEnergy, 2));
     }
-    if (t.maxFinalRatioToNoGi && !(score.finalRatioToNoGi <= *t.maxFinalRatioToNoGi)) {
-        misses.push_back("final error x" + number(score.finalRatioToNoGi, 2) + " of no GI > x" +
-                         number(*t.maxFinalRatioToNoGi, 2));
+    if (t.maxIndirectRatioToNoGi &&
+            !(score.indirectRatioToNoGi <= *t.maxIndirectRatioToNoGi)) {
+        misses.push_back("rel. RMSE x" + number(score.indirectRatioToNoGi, 2) + " of no GI > x" +
+                         number(*t.maxIndirectRatioToNoGi, 2));
     }
     if (t.maxLeak && !(score.leak && *score.leak <= *t.maxLeak)) {
         misses.push_back("leak " + (score.leak ? percent(*score.leak) : std::string("n/a")) +
@@ -90,8 +91,8 @@ std::string targetText(const SuiteTarget& t) {
     if (t.minEnergy && t.maxEnergy) {
         parts.push_back("energy " + number(*t.minEnergy, 2) + "-" + number(*t.maxEnergy, 2));
     }
-    if (t.maxFinalRatioToNoGi) {
-        parts.push_back("final error <= x" + number(*t.maxFinalRatioToNoGi, 1) + " no GI");
+    if (t.maxIndirectRatioToNoGi) {
+        parts.push_back("rel. RMSE <= x" + number(*t.maxIndirectRatioToNoGi, 1) + " no GI");
     }
     if (t.maxLeak) parts.push_back("leak <= " + percent(*t.maxLeak));
     std::string text;
@@ -154,8 +155,11 @@ void targetsSection(std::ostringstream& out, const std::vector<SuiteScore>& scor
         met += s.available && s.misses.empty();
         std::string measured = "rel. RMSE " + number(s.relRmseIndirect) + ", energy " +
                                number(s.energyIndirect);
-        if (s.target.maxFinalRatioToNoGi) {
-            measured += ", final x" + number(s.finalRatioToNoGi, 2) + " no GI";
+        if (s.target.maxIndirectRatioToNoGi) {
+            // The final image's ratio too: in Sponza's sun view it is the direct light's
+            // (accuracy-analysis.md), not a target.
+            measured += " (x" + number(s.indirectRatioToNoGi, 2) + " no GI; final image x" +
+                        number(s.finalRatioToNoGi, 2) + ")";
         }
         if (s.leak) measured = "leak " + percent(*s.leak);
         std::string verdict = "met";
@@ -204,6 +208,8 @@ std::vector<SuiteScore> scoreSuite(const std::vector<SuiteSceneResult>& results)
     for (const SuiteSceneResult& r : results) {
         const BenchMeasurement* direct = find(r, kSuiteDirect);
         const double noGiFinal = direct && direct->available ? direct->relRmseFinal : kNaN;
+        const double noGiIndirect =
+                direct && direct->available ? direct->relRmseIndirect : kNaN;
         for (const BenchMeasurement& m : r.measurements) {
             SuiteScore s;
             s.scene = r.scene.name;
@@ -217,6 +223,8 @@ std::vector<SuiteScore> scoreSuite(const std::vector<SuiteSceneResult>& results)
                 s.energyIndirect = m.energyRatioIndirect;
                 s.relRmseFinal = m.relRmseFinal;
                 s.finalRatioToNoGi = noGiFinal > 0.0 ? m.relRmseFinal / noGiFinal : kNaN;
+                s.indirectRatioToNoGi =
+                        noGiIndirect > 0.0 ? m.relRmseIndirect / noGiIndirect : kNaN;
                 s.meanIndirect = meanGeometryLuminance(m.indirectImage, r.reference.coverage);
                 s.leak = leakOf(results, r, s.configuration);
                 s.noiseLimited = !(r.reference.noise.indirect <=

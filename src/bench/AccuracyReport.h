@@ -37,6 +37,7 @@ struct SuiteScore {
     std::string unavailableReason;
     double relRmseIndirect = 0.0, energyIndirect = 0.0, relRmseFinal = 0.0;
     double finalRatioToNoGi = 0.0;    // NaN without a direct-mode row
+    double indirectRatioToNoGi = 0.0; // relRmseIndirect / the direct mode's; NaN without it
     double meanIndirect = 0.0;        // mean indirect luminance over geometry pixels
     std::optional<double> leak;       // the dark room's rows only
     bool noiseLimited = false;

@@ -154,7 +154,7 @@ SuiteTarget suiteTarget(SceneKind kind, const std::string& configuration) {
     } else if (kind == SceneKind::Sponza && configuration == kSuiteVoxel) {
         target.minEnergy = 0.85;
         target.maxEnergy = 1.15;
-        target.maxFinalRatioToNoGi = 0.6;
+        target.maxIndirectRatioToNoGi = 0.6;
     } else if (kind == SceneKind::LeakDark && configuration == kSuiteVoxel) {
         target.maxLeak = 0.05;
     }

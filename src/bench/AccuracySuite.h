@@ -32,7 +32,7 @@ enum class SuiteSize {
 // What a scene is there to test, which decides the targets it is held to.
 enum class SceneKind {
     Cornell,     // a variant of the Cornell box: relative RMSE and energy targets
-    Sponza,      // energy and the final error against the no-GI baseline
+    Sponza,      // energy and the indirect error against the no-GI baseline's
     LeakLit,     // the lit room of the thin-wall pair: scored, and the leak's denominator
     LeakDark,    // the dark room: its indirect light over the lit room's is the leak
     Energy,      // the closed white box: energy balance
@@ -72,10 +72,12 @@ inline constexpr const char* kSuiteVpl = "vpl";
 struct SuiteTarget {
     std::optional<double> maxRelRmseIndirect;
     std::optional<double> minEnergy, maxEnergy;       // indirect energy ratio
-    std::optional<double> maxFinalRatioToNoGi;        // relRmseFinal / the direct mode's
+    // relRmseIndirect / the direct mode's: the targets are all on the indirect term,
+    // and its no-GI baseline for Sponza (2.49 against voxel GI's 2.16) is an indirect error.
+    std::optional<double> maxIndirectRatioToNoGi;
     std::optional<double> maxLeak;                    // dark room over lit room, indirect
     bool any() const {
-        return maxRelRmseIndirect || minEnergy || maxFinalRatioToNoGi || maxLeak;
+        return maxRelRmseIndirect || minEnergy || maxIndirectRatioToNoGi || maxLeak;
     }
 };
 
