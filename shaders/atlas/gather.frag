@@ -2,7 +2,10 @@
 // sample texels y, skips pairs that do not face each other, and adds the sender's direct
 // radiance L(y). Two estimators of
 // E_ind(x) = integral of L(y) cos(theta_x) cos(theta_y) / r^2 dA(y):
-//   ATLAS_ESTIMATOR_AREA      the area form, importance-sampled by the power each texel sends:
+//   ATLAS_ESTIMATOR_AREA      the area form, importance-sampled by the power each texel sends
+//                             (with atlas.importance, by that power times what the camera's
+//                             view can receive of it: sender_weight.glsl; below, mean(L) and P
+//                             then stand for the weight per area and its total):
 //                             AtlasSenderSamplingPass draws texel y with probability
 //                             p(y) = a(y) mean(L(y)) / P (a(y): the surface area the texel
 //                             stands for, the position layer's w; P: the sum over all texels),
@@ -32,6 +35,7 @@
 // Output: the sums of both sides (before the 1/N normalisation) added to the running sums by
 // blending.
 #include "atlas_common.glsl"
+#include "sender_weight.glsl"
 #include "../common/constants.glsl"
 #include "../common/hash.glsl"
 #ifdef VISIBILITY_VOXEL
@@ -66,7 +70,7 @@ layout(binding = BIND_TEX_ATLAS_POSITION) uniform sampler2D atlasPosition;
 layout(binding = BIND_TEX_ATLAS_SAMPLES) uniform sampler2D atlasSamples;
 
 layout(std430, binding = BIND_SSBO_ATLAS_SENDER_ROWS) readonly buffer SenderRows {
-    float rowPower[];
+    vec2 rowPower[];
 };
 layout(std430, binding = BIND_SSBO_ATLAS_SENDER_POOL) readonly buffer SenderPool {
     uint pool[];
@@ -127,6 +131,7 @@ void main() {
     // between rotated sets), so its own estimate converges as sets accumulate.
     uint receiver = hash(uint(texel.y * resolution + texel.x) ^ floatBitsToUint(atlas.sampling.y));
     vec3 sum = vec3(0.0), sumBack = vec3(0.0);
+    float floorPerPower = area ? importanceFloor(rowPower[resolution - 1]) : 0.0;
     for (int i = gatherRange.x; i < gatherRange.y; ++i) {
         ivec2 t;
         if (area) {
@@ -158,9 +163,11 @@ void main() {
         vec3 radiance = senderBack ? back : front;
         vec3 contribution;
         if (area) {
-            // Drawn with probability a(y) mean(L(y)) / P (L of both sides): the weight is
-            // L / mean(L) times the geometry term, and P multiplies the sums below.
-            float power = dot(front + back, vec3(1.0 / 3.0));
+            // Drawn with probability a(y) w(y) / W (sender_weight.glsl; without atlas.importance
+            // w = mean(L) of both sides and W = P): the weight is L / w times the geometry
+            // term, and W multiplies the sums below.
+            float power = combinedWeight(
+                    senderWeightsPerArea(front, back, senderImportance(t)), floorPerPower);
             if (!(power > 0.0) || isinf(power)) continue;
             contribution = radiance / power * (cosX * cosY / max(r2, atlas.sampling.z));
         } else {
@@ -178,7 +185,8 @@ void main() {
         if (receiverBack) sumBack += contribution;
         else sum += contribution;
     }
-    float scale = area ? rowPower[resolution - 1] : atlas.sampling.z;
+    float scale = area ? combinedWeight(rowPower[resolution - 1], floorPerPower)
+                       : atlas.sampling.z;
     // The sums are divided by the samples accumulated: the sky's mean counts `count` times.
     vec3 sky = skyIrradiance(x, nx, receiverPosition.w, receiver * 7919u) * float(count);
     vec3 skyBack = receiverTwoSided

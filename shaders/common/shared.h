@@ -17,11 +17,12 @@
 #define BIND_SSBO_LIGHTS            0   // GpuLight[], every light of the scene
 #define BIND_SSBO_MATERIALS         1   // GpuMaterial[], indexed by the draw's material
 #define BIND_SSBO_SHADOWS           2   // GpuShadow[], one per light, same index as GpuLight
-#define BIND_SSBO_ATLAS_SENDER_ROWS 3   // float[R]: prefix sums over atlas rows of the texels'
-                                        // sender weights a(y) mean(L(y)) (W/sr); the last is
-                                        // their total P
-#define BIND_SSBO_ATLAS_SENDER_BLOCKS 4 // float[R x ceil(R / ATLAS_SENDER_BLOCK)]: per row, the
-                                        // prefix sums of the weights at each block's end (W/sr)
+#define BIND_SSBO_ATLAS_SENDER_ROWS 3   // vec2[R]: prefix sums over atlas rows of the texels'
+                                        // a(y) mean(L(y)) I(y) (x) and a(y) mean(L(y)) (y, W/sr),
+                                        // I the view's importance (1 without atlas.importance);
+                                        // the last holds the totals
+#define BIND_SSBO_ATLAS_SENDER_BLOCKS 4 // vec2[R x ceil(R / ATLAS_SENDER_BLOCK)]: per row, the
+                                        // same prefix sums at each block's end
 #define BIND_SSBO_ATLAS_SENDER_POOL 5   // uint[N x ATLAS_POOL_STRIDE]: the area estimator's
                                         // sender texels (y R + x) of the current sample set,
                                         // ATLAS_POOL_STRIDE per stratum; ~0u = none
@@ -49,6 +50,9 @@
                                         // (SVO_COORD_BITS per axis) per occupied leaf
 #define BIND_SSBO_SVO_LEAF_BITS     20  // build only: uint[] one bit per leaf voxel, x fastest
 #define BIND_SSBO_SVO_BUILD         21  // build only: SvoBuildState
+#define BIND_SSBO_ATLAS_VIEW_SAMPLES 22 // vec4[2 x ATLAS_VIEW_SAMPLES]: the surfaces the camera
+                                        // sees at the centres of a grid of cells, position
+                                        // (w = 1 where one is) and the normal facing the eye
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -101,6 +105,8 @@
 #define BIND_TEX_ATLAS_DIRECT_BACK  15
 #define BIND_TEX_ATLAS_SUMS_BACK    16
 #define BIND_TEX_ATLAS_LIT_BACK     17
+#define BIND_TEX_ATLAS_IMPORTANCE   26  // rg32f, atlas.importance: how much of each texel's light
+                                        // the camera's view can receive, front (r) and back (g)
 #define BIND_TEX_ATLAS_SURFACE_MASK 25  // r8ui, bit i set when neighbour i of the texel's 3x3
                                         // block (row order, the centre left out) lies on the
                                         // texel's own surface (atlas/surface_mask.frag)
@@ -118,6 +124,7 @@
 #define BIND_TEX_REUSE_HISTORY      23  // rgba16f, the previous frame's result, E_ind + depth
 
 // Image units (imageLoad/Store/atomics) of the voxel passes.
+#define BIND_IMG_ATLAS_IMPORTANCE   0   // rg32f, written by atlas/sender_sampling's importance step
 #define BIND_IMG_VOXEL_ALBEDO       0   // rgba16f, running average under the voxel's spinlock
 #define BIND_IMG_VOXEL_NORMAL       1   // rgba8_snorm, running averages: xyz = normal, w = the
                                         // surface's offset from the voxel centre along it
@@ -187,6 +194,8 @@
 #define ATLAS_SENDER_BLOCK          16  // texels per block of the sender table's row prefix sums
 #define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
 #define ATLAS_SENDER_LOCAL_SIZE     64  // work-group size of atlas/sender_sampling
+#define ATLAS_VIEW_SAMPLES_PER_SIDE 16  // cells per side of the image whose surfaces weigh the
+                                        // senders' draw (atlas.importance)
 #define ATLAS_POSE_LOCAL_SIZE       64  // work-group size of atlas/follow_pose
 #define SCENE_VERTEX_FLOATS         14  // floats per GpuScene vertex (scene::SceneVertex)
 #define ATLAS_VERTEX_FLOATS         18  // floats per atlas vertex (atlas::GpuAtlasVertex)
@@ -520,6 +529,11 @@ struct AtlasUniforms {                  // std140
                                         // atlas.filter, w = unused
     vec4 sky;                           // rgb = radiance of the sky lights together
                                         // (W/(m^2 sr)), w = sky directions per receiver and set
+    vec4 importance;                    // x = the share of the mean importance every lit texel
+                                        // keeps, 0 = senders drawn by power alone (I = 1);
+                                        // y = 1 / ATLAS_VIEW_SAMPLES_PER_SIDE^2; z = 1 when
+                                        // every surface sends (gi.bounces > 1), 0 when only
+                                        // directly lit texels do; w = unused
 };
 
 #ifdef __cplusplus

@@ -1,5 +1,6 @@
 #include "render/ResourcePlan.h"
 
+#include "gi/atlas/AtlasSenderSamplingPass.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gi/voxel/CascadeVolume.h"
 #include "gi/voxel/ConeSet.h"
@@ -266,6 +267,10 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
     plan.atlasMemory = atlas::AtlasTextures::memoryFor(
             plan.atlasResolution, atlas::AtlasTextures::needsBackSides(scene),
             settings.giBounces);
+    if (settings.atlas.importance && settings.atlas.estimator == ATLAS_ESTIMATOR_AREA) {
+        plan.atlasMemory.push_back(
+                atlas::AtlasSenderSamplingPass::importanceMemoryFor(plan.atlasResolution));
+    }
     plan.shadowMemory = ShadowPass::memoryFor(plannedLights(lights, plan), settings.shadow);
     return plan;
 }

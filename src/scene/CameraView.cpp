@@ -53,4 +53,25 @@ CameraView cameraLookAt(const glm::vec3& eye, const glm::vec3& target, float yfo
     return view;
 }
 
+namespace {
+
+constexpr float kMovedDistanceShare = 0.05f;
+constexpr float kMovedTurnCosine = 0.985f;   // about 10 degrees
+constexpr float kMovedZoomRatio = 1.1f;
+
+glm::vec3 forwardOf(const CameraView& camera) {
+    return -glm::vec3(camera.view[0][2], camera.view[1][2], camera.view[2][2]);
+}
+
+} // namespace
+
+bool viewMovedFarFrom(const CameraView& before, const CameraView& now, float sceneDiagonal) {
+    const float zoom = now.yfov / std::max(before.yfov, 1e-6f);
+    return glm::distance(before.eye, now.eye) > kMovedDistanceShare * sceneDiagonal ||
+           glm::dot(glm::normalize(forwardOf(before)), glm::normalize(forwardOf(now))) <
+                   kMovedTurnCosine ||
+           zoom > kMovedZoomRatio || zoom < 1.0f / kMovedZoomRatio ||
+           std::abs(now.aspect - before.aspect) > 0.01f * before.aspect;
+}
+
 } // namespace gi::scene

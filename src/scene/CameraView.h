@@ -23,6 +23,13 @@ struct CameraView {
 
 [[nodiscard]] CameraView cameraFromScene(const scene::Camera& camera, float aspect,
         const scene::Aabb& bounds);
+// Whether `now` moved further than 5 % of the scene's diagonal from `before`, turned about
+// 10 degrees or zoomed 10 %: when work drawn for what one view sees (the VPLs' draw, the atlas
+// senders' draw) is redone. Such a draw decides only where samples go, not what they carry, so
+// one made for a nearby view stays unbiased; redoing it at every small move would pay for it
+// each frame and make the samples jump between surfaces.
+[[nodiscard]] bool viewMovedFarFrom(const CameraView& before, const CameraView& now,
+        float sceneDiagonal);
 [[nodiscard]] CameraView cameraLookAt(const glm::vec3& eye, const glm::vec3& target,
         float yfovRadians, float aspect, const scene::Aabb& bounds);
 

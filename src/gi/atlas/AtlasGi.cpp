@@ -16,9 +16,23 @@ namespace {
 // sets accumulate, so a still view converges whatever this is; more only costs time.
 constexpr int kSkyDirectionsPerSet = 16;
 
+// atlas.importance: the share of the mean importance every lit texel keeps in the senders'
+// draw whatever the view sees (sender_weight.glsl), as the VPLs' draw keeps
+// (vpl::kViewIndependentShare): nothing the view's samples miss is left out of the draw.
+constexpr float kImportanceFloorShare = 0.1f;
+
 // The sky's directions per set: none without a sky.
 int skyDirections(const GiFrameInputs& in) {
     return scene::skyRadiance(in.lights) != glm::vec3(0.0f) ? kSkyDirectionsPerSet : 0;
+}
+
+// The atlas layers' memory, with the senders' importance layer when the draw uses it.
+std::vector<gl::MemoryItem> atlasMemoryFor(const AtlasSettings& s, bool backSides, int bounces) {
+    std::vector<gl::MemoryItem> items = AtlasTextures::memoryFor(s.resolution, backSides, bounces);
+    if (s.importance && s.estimator == ATLAS_ESTIMATOR_AREA) {
+        items.push_back(AtlasSenderSamplingPass::importanceMemoryFor(s.resolution));
+    }
+    return items;
 }
 
 bool sameLights(const std::vector<scene::Light>& a, const std::vector<scene::Light>& b) {
@@ -112,7 +126,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     }
     if (!gl::fitsResourceBudget("atlas.resolution " + std::to_string(s.resolution) +
                     " (atlas layers)",
-                AtlasTextures::memoryFor(s.resolution, mBackSides, settings.giBounces), error)) {
+                atlasMemoryFor(s, mBackSides, settings.giBounces), error)) {
         return false;
     }
     if (s.samples > maxTexture) {
@@ -148,6 +162,11 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
     if (changed) {
         mContent.gBufferValid = false;
         mContent.samples = 0;
+        mViewSampledFrom.reset();
+        mViewSampleTakes = 0;
+        mSenderSampling.reserveImportance(drawsByImportance() ? mSettings.resolution : 0);
+        mImportanceStale = false;
+        mImportanceReady = false;
         mFrameIndex = 0;
         mWarnedNoVisibility = false;
     }
@@ -168,7 +187,14 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
             mSettings.filter ? 1.0f : 0.0f, 0.0f);
     const glm::vec3 sky = scene::skyRadiance(in.lights) * in.scene.exposure();
     u.sky = glm::vec4(sky, float(skyDirections(in)));
+    constexpr int kCells = ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE;
+    u.importance = glm::vec4(drawsByImportance() && mImportanceReady ? kImportanceFloorShare : 0.0f,
+            1.0f / float(kCells), mBounces > 1 ? 1.0f : 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
+}
+
+bool AtlasGi::drawsByImportance() const {
+    return mSettings.importance && mSettings.estimator == ATLAS_ESTIMATOR_AREA;
 }
 
 const OccupancyVolume* AtlasGi::visibilityOccupancy(const GiFrameInputs& in) {
@@ -243,6 +269,11 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const int bvhRayIterations = visibilityBvh(in);
     const FramePlan plan = planFrame(in, occupancy);
+    // New view samples, or a G-buffer whose surfaces may have moved: the importance is
+    // computed again before this frame's draws, which then use it.
+    if (drawsByImportance() && mViewSampledFrom && plan.drawGBuffer) mImportanceStale = true;
+    const bool computeImportance = drawsByImportance() && mImportanceStale && plan.gather;
+    if (computeImportance) mImportanceReady = true;
     writeUniforms(plan, in);
     // Progressive sums gather until they reach atlas.target_samples; without progression
     // every frame is computed afresh, and only a change of inputs breaks from the last one.
@@ -253,14 +284,18 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                 {mTextures}, profiler);
         if (mSettings.filter) mDilate.drawSurfaceMask({mTextures, mUniforms}, profiler);
     }
+    if (computeImportance) {
+        mSenderSampling.computeImportance(mTextures, mUniforms, profiler);
+        mImportanceStale = false;
+    }
     if (plan.gather) {
         if (plan.restart) mGather.clear();
         for (int bounce = 0; bounce < mBounces; ++bounce) {
             if (bounce > 0) mBounceSenders.execute({mTextures, mUniforms}, profiler);
             if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
                 // The power table follows the senders' radiance: the G-buffer's direct light,
-                // which the further bounces' tables replace every frame.
-                const bool table = plan.drawGBuffer || mBounces > 1;
+                // which the further bounces' tables replace every frame, and their importance.
+                const bool table = plan.drawGBuffer || mBounces > 1 || computeImportance;
                 mSenderSampling.execute(
                         {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
             }
@@ -274,6 +309,16 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
 
     mResolve.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},
             {in.outputSize}, profiler);
+    // The view's surfaces, for the next frames' draws: taken again once the camera has moved
+    // far enough (scene::viewMovedFarFrom) for the draw to follow it.
+    if (drawsByImportance() &&
+            (!mViewSampledFrom || scene::viewMovedFarFrom(*mViewSampledFrom, in.camera,
+                                          glm::length(in.scene.bounds().size())))) {
+        mSenderSampling.takeViewSamples(mResolve.indirect(), in.frameUniforms, profiler);
+        mViewSampledFrom = in.camera;
+        mImportanceStale = true;
+        ++mViewSampleTakes;
+    }
     mDebugView = plan.view;
     if (mDebugView >= 0) {
         mDebugViewPass.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},

@@ -52,6 +52,9 @@ public:
     const Atlas& atlas() const { return mAtlas; }
     const AtlasBuildInfo& buildInfo() const { return mBuildInfo; }
     const AtlasTextures& textures() const { return mTextures; }
+    const AtlasSenderSamplingPass& senderSampling() const { return mSenderSampling; }
+    // atlas.importance: how many times the view's surfaces were sampled since configure.
+    int viewSampleTakes() const { return mViewSampleTakes; }
 
 private:
     // What the atlas layers hold, and what they were computed from: a frame redraws the
@@ -88,6 +91,8 @@ private:
     FramePlan planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy);
     // The frame's AtlasUniforms: the only write of the buffer per frame.
     void writeUniforms(const FramePlan& plan, const GiFrameInputs& in);
+    // Whether the area estimator's senders are drawn by the view's importance.
+    bool drawsByImportance() const;
 
     AtlasMesh mMesh;
     bool mBackSides = false; // some material is double-sided (AtlasTextures)
@@ -110,6 +115,13 @@ private:
     bool mWarnedNoVisibility = false;  // a missing occupancy or BVH is reported once per configure
     int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
     bool mConverging = false;          // GiOutputs::converging of the last frame
+
+    // atlas.importance: the view the senders' importance was last computed for, whether the
+    // view samples taken since need it computed again, and whether the layer holds it.
+    std::optional<scene::CameraView> mViewSampledFrom;
+    bool mImportanceStale = false;
+    bool mImportanceReady = false;
+    int mViewSampleTakes = 0;
 
     // Animated instances: the atlas vertices follow GpuScene's pose (AtlasPosePass).
     bool mFollowsPose = false;

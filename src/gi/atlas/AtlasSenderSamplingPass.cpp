@@ -2,6 +2,8 @@
 
 #include "gl/Shared.h"
 
+#include <glm/glm.hpp>
+
 namespace gi::atlas {
 namespace {
 
@@ -15,6 +17,10 @@ std::size_t blocksPerRow(int resolution) {
 
 } // namespace
 
+gl::MemoryItem AtlasSenderSamplingPass::importanceMemoryFor(int resolution) {
+    return {"atlas/importance", gl::textureBytes(GL_RG32F, {resolution, resolution, 1}, 1)};
+}
+
 bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& error) {
     const auto build = [&](const char* name, const char* step) {
         return shaders.build({name, {{GL_COMPUTE_SHADER, "atlas/sender_sampling.comp"}}, {step}},
@@ -25,7 +31,17 @@ bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& erro
     mPrefix = build("atlas/sender_sampling_prefix", "STEP_PREFIX");
     if (!mPrefix) return false;
     mPool = build("atlas/sender_sampling_pool", "STEP_POOL");
-    return bool(mPool);
+    if (!mPool) return false;
+    mViewSamples = build("atlas/sender_sampling_view_samples", "STEP_VIEW_SAMPLES");
+    if (!mViewSamples) return false;
+    mImportance = build("atlas/sender_sampling_importance", "STEP_IMPORTANCE");
+    if (!mImportance) return false;
+    constexpr std::size_t kCells =
+            std::size_t(ATLAS_VIEW_SAMPLES_PER_SIDE) * ATLAS_VIEW_SAMPLES_PER_SIDE;
+    mViewSampleBuffer = gl::createBuffer(kCells * 2 * sizeof(glm::vec4), nullptr, 0,
+            "atlas/view_samples");
+    reserveImportance(0);
+    return true;
 }
 
 void AtlasSenderSamplingPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
@@ -35,10 +51,10 @@ void AtlasSenderSamplingPass::execute(const Inputs& in, gl::GpuProfiler& profile
     bool table = in.rebuildTable;
     if (r != mResolution) {
         mResolution = r;
-        mRowPower = gl::createBuffer(std::size_t(r) * sizeof(float), nullptr, 0,
+        mRowPower = gl::createBuffer(std::size_t(r) * sizeof(glm::vec2), nullptr, 0,
                 "atlas/sender_sampling_rows");
-        mBlockPower = gl::createBuffer(std::size_t(r) * blocksPerRow(r) * sizeof(float), nullptr,
-                0, "atlas/sender_sampling_blocks");
+        mBlockPower = gl::createBuffer(std::size_t(r) * blocksPerRow(r) * sizeof(glm::vec2),
+                nullptr, 0, "atlas/sender_sampling_blocks");
         table = true;
     }
     if (samples != mSamples) {
@@ -73,6 +89,65 @@ void AtlasSenderSamplingPass::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_ROWS, mRowPower.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_BLOCKS, mBlockPower.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SENDER_POOL, mPoints.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_IMPORTANCE, mImportanceLayer.id());
+}
+
+void AtlasSenderSamplingPass::reserveImportance(int resolution) {
+    if (resolution == mImportanceResolution && mImportanceLayer) return;
+    mImportanceResolution = resolution;
+    if (resolution > 0) {
+        mImportanceLayer =
+                gl::createTexture2D(GL_RG32F, {resolution, resolution}, 1, "atlas/importance");
+        return;
+    }
+    mImportanceLayer = gl::createTexture2D(GL_RG32F, {1, 1}, 1, "atlas/importance_none");
+    const float none[2] = {0.0f, 0.0f};
+    glTextureSubImage2D(mImportanceLayer.id(), 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, none);
+}
+
+void AtlasSenderSamplingPass::takeViewSamples(const gl::Texture& viewIndirect,
+        const gl::Buffer& frameUniforms, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "atlas/view_samples");
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, frameUniforms.id());
+    glBindTextureUnit(BIND_TEX_INDIRECT, viewIndirect.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_VIEW_SAMPLES,
+            mViewSampleBuffer.id());
+    glUseProgram(mViewSamples.id());
+    glDispatchCompute(
+            groupsFor(std::size_t(ATLAS_VIEW_SAMPLES_PER_SIDE) * ATLAS_VIEW_SAMPLES_PER_SIDE),
+            1, 1);
+    // Consumer: the importance step reads the samples.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+void AtlasSenderSamplingPass::computeImportance(const AtlasTextures& textures,
+        const gl::Buffer& atlasUniforms, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "atlas/importance");
+    const int r = textures.resolution;
+    reserveImportance(r);
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, atlasUniforms.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, textures.direct.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, textures.directBack.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, textures.normal.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, textures.position.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_VIEW_SAMPLES,
+            mViewSampleBuffer.id());
+    glBindImageTexture(BIND_IMG_ATLAS_IMPORTANCE, mImportanceLayer.id(), 0, GL_FALSE, 0,
+            GL_WRITE_ONLY, GL_RG32F);
+    glUseProgram(mImportance.id());
+    glDispatchCompute(groupsFor(std::size_t(r) * std::size_t(r)), 1, 1);
+    // Consumers: the table's rows and the gather fetch the layer.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+std::vector<glm::vec4> AtlasSenderSamplingPass::readViewSamples() const {
+    std::vector<glm::vec4> samples(
+            std::size_t(2) * ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE);
+    glGetNamedBufferSubData(mViewSampleBuffer.id(), 0,
+            GLsizeiptr(samples.size() * sizeof(glm::vec4)), samples.data());
+    return samples;
 }
 
 } // namespace gi::atlas

@@ -14,15 +14,28 @@
 //    a hash of the receiver and the stratum: every receiver's set is stratified, and
 //    neighbouring receivers see different senders, so an unlucky set of points becomes noise
 //    between texels instead of one error shared by the whole image.
+// With atlas.importance each texel's power is also weighed by how much of its light the camera's
+// view can receive (sender_weight.glsl, the analogue of the VPLs' draw, results-vpl.md): the
+// senders the view's surfaces can see are drawn more often and carry less each, so the
+// estimate stays unbiased and the view's noise falls where most of the power goes elsewhere
+// (a sunlit ground outside a room).
+//  - view samples (takeViewSamples, after a resolve): the surfaces at the centres of
+//    ATLAS_VIEW_SAMPLES_PER_SIDE^2 cells of the camera's image, from the resolve's view depth.
+//  - importance (computeImportance): per texel and side, the gather's kernel without
+//    visibility summed over those surfaces, into an RG32F layer of the atlas' size.
 // Inputs : AtlasTextures direct (rgb = L, a > 0: written) and position (w = a(y), m^2);
-//          AtlasUniforms (R, N, sampling.x = the set's rotation).
+//          AtlasUniforms (R, N, sampling.x = the set's rotation, importance.x = its share).
 // Outputs: the buffers at BIND_SSBO_ATLAS_SENDER_ROWS / _BLOCKS / _POOL (shared.h), owned by
-//          the pass (sized by R and N) and bound by bind() for the gather.
+//          the pass (sized by R and N) and bound by bind() for the gather, with the importance
+//          layer at BIND_TEX_ATLAS_IMPORTANCE.
 #pragma once
 
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
+#include "gl/MemoryRegistry.h"
 #include "gl/ShaderLibrary.h"
+
+#include <glm/glm.hpp>
 
 #include <vector>
 
@@ -38,17 +51,37 @@ public:
         int bounce = 0;                    // whose senders: textures.senderRadiance(bounce)
     };
 
+    // The importance layer's memory at `resolution` (atlas.importance).
+    [[nodiscard]] static gl::MemoryItem importanceMemoryFor(int resolution);
+
     bool init(gl::ShaderLibrary& shaders, std::string& error);
     // Rebuilds the power table from the G-buffer when asked to (or when the atlas resolution
     // changed), then the point pool of the current set.
     void execute(const Inputs& in, gl::GpuProfiler& profiler);
-    // Binds the table and the pool for a consumer (the gather).
+    // Binds the table, the pool and the importance layer for a consumer (the gather).
     void bind() const;
 
+    // Allocates the importance layer for an atlas of `resolution` texels a side, or with 0
+    // releases it for a 1 x 1 layer of zeros (senders drawn by power alone).
+    void reserveImportance(int resolution);
+    // The surfaces the camera sees, from the view depth in `viewIndirect`'s alpha (the
+    // resolve's output, drawn with `frameUniforms`); computeImportance weighs texels by them.
+    void takeViewSamples(const gl::Texture& viewIndirect, const gl::Buffer& frameUniforms,
+            gl::GpuProfiler& profiler);
+    // The importance of each texel that sends light, for the last view samples taken (the
+    // power is weighed in when the table is built). Again whenever the direct light changes
+    // which texels send; the table must be rebuilt after it.
+    void computeImportance(const AtlasTextures& textures, const gl::Buffer& atlasUniforms,
+            gl::GpuProfiler& profiler);
+    // The view samples last taken, two per cell (position with w = 1 where a surface is,
+    // normal), read back (waits for the GPU): for tests.
+    [[nodiscard]] std::vector<glm::vec4> readViewSamples() const;
+
 private:
-    gl::ProgramRef mRows, mPrefix, mPool;
-    gl::Buffer mRowPower, mBlockPower, mPoints;
-    int mResolution = 0, mSamples = 0;
+    gl::ProgramRef mRows, mPrefix, mPool, mViewSamples, mImportance;
+    gl::Buffer mRowPower, mBlockPower, mPoints, mViewSampleBuffer;
+    gl::Texture mImportanceLayer;   // RG32F, R x R once computed; 1 x 1 zero before
+    int mResolution = 0, mSamples = 0, mImportanceResolution = 0;
 };
 
 } // namespace gi::atlas

@@ -19,28 +19,6 @@ constexpr float kFilterNormalCosine = 0.9f;
 // of the image: enough to find the surfaces the view holds, few enough that a moved camera's
 // redraw costs little next to the gather (texels x samples kernel evaluations on the CPU).
 constexpr int kViewSamplesPerSide = 16;
-// A camera that moved further than this share of the scene's diagonal, or turned or zoomed
-// further than these, since the VPLs were drawn for it draws them anew. The view's importance
-// decides only where VPLs are drawn, not what they send, so VPLs drawn for a nearby view stay
-// unbiased; redrawing at every small move would pay the draw each frame and make the VPLs
-// flicker as they jump between texels.
-constexpr float kRedrawDistanceShare = 0.05f;
-constexpr float kRedrawTurnCosine = 0.985f;   // about 10 degrees
-constexpr float kRedrawZoomRatio = 1.1f;
-
-glm::vec3 forwardOf(const scene::CameraView& camera) {
-    return -glm::vec3(camera.view[0][2], camera.view[1][2], camera.view[2][2]);
-}
-
-bool movedFarEnough(const scene::CameraView& drawnFor, const scene::CameraView& now,
-        float sceneDiagonal) {
-    const float zoom = now.yfov / std::max(drawnFor.yfov, 1e-6f);
-    return glm::distance(drawnFor.eye, now.eye) > kRedrawDistanceShare * sceneDiagonal ||
-           glm::dot(glm::normalize(forwardOf(drawnFor)), glm::normalize(forwardOf(now))) <
-                   kRedrawTurnCosine ||
-           zoom > kRedrawZoomRatio || zoom < 1.0f / kRedrawZoomRatio ||
-           std::abs(now.aspect - drawnFor.aspect) > 0.01f * drawnFor.aspect;
-}
 
 // The surface area (m^2) the light that reaches most of the scene lights: each light's texels
 // cover every surface it sees once, so summing over lights would count shared surfaces twice.
@@ -213,7 +191,7 @@ void VplGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     mGBuffer.execute(in.scene, in.frameUniforms, in.outputSize, profiler);
     if (stale) renderReflectiveShadowMaps(in, profiler);
     const bool viewMoved = mSettings.importance &&
-            movedFarEnough(mDrawnFor, in.camera, glm::length(in.scene.bounds().size()));
+            scene::viewMovedFarFrom(mDrawnFor, in.camera, glm::length(in.scene.bounds().size()));
     if (stale || viewMoved) drawFromTexels(in, profiler, stale);
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const int bvhRayIterations = visibilityBvh(in);
