@@ -38,6 +38,11 @@ struct SuiteScore {
     double relRmseIndirect = 0.0, energyIndirect = 0.0, relRmseFinal = 0.0;
     double finalRatioToNoGi = 0.0;    // NaN without a direct-mode row
     double indirectRatioToNoGi = 0.0; // relRmseIndirect / the direct mode's; NaN without it
+    // relRmseIndirect x the reference's RMS over its mean: the RMSE over the reference's mean
+    // radiance, the normalisation the accuracy issue's figures fit (its no-GI baselines are
+    // above 1: an image of zeros scores the reference's RMS / mean).
+    double relRmseIndirectPerMean = 0.0;
+    std::vector<std::string> missesPerMean;   // the targets missed with that normalisation
     double meanIndirect = 0.0;        // mean indirect luminance over geometry pixels
     std::optional<double> leak;       // the dark room's rows only
     bool noiseLimited = false;
@@ -45,6 +50,10 @@ struct SuiteScore {
     std::vector<std::string> misses;  // each target missed, e.g. "energy 0.71 < 0.9"
     double frameMs = 0.0;
 };
+
+// The root mean square of `image`'s channels over their mean, over the pixels whose coverage
+// exceeds kGeometryCoverage (the sums of reference::measureImageError); NaN without any.
+[[nodiscard]] double rmsOverMean(const core::Image& image, const std::vector<float>& coverage);
 
 // The mean luminance of `image` over the pixels whose coverage exceeds kGeometryCoverage.
 [[nodiscard]] double meanGeometryLuminance(const core::Image& image,
