@@ -165,7 +165,6 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         mViewSampledFrom.reset();
         mViewSampleTakes = 0;
         mSenderSampling.reserveImportance(drawsByImportance() ? mSettings.resolution : 0);
-        mImportanceStale = false;
         mImportanceReady = false;
         mFrameIndex = 0;
         mWarnedNoVisibility = false;
@@ -269,11 +268,15 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const int bvhRayIterations = visibilityBvh(in);
     const FramePlan plan = planFrame(in, occupancy);
-    // New view samples, or a G-buffer whose surfaces may have moved: the importance is
-    // computed again before this frame's draws, which then use it.
-    if (drawsByImportance() && mViewSampledFrom && plan.drawGBuffer) mImportanceStale = true;
-    const bool computeImportance = drawsByImportance() && mImportanceStale && plan.gather;
-    if (computeImportance) mImportanceReady = true;
+    // The senders' importance follows what the camera sees in this frame: taken for the first
+    // gather, when the geometry or the lights changed (the G-buffer is drawn again), and when
+    // the camera has moved far enough (scene::viewMovedFarFrom) since. So a renderer that saw
+    // the scene move draws the same senders as one that sees it only as it is now.
+    const bool sampleView = drawsByImportance() && plan.gather &&
+            (!mViewSampledFrom || plan.drawGBuffer ||
+                    scene::viewMovedFarFrom(*mViewSampledFrom, in.camera,
+                            glm::length(in.scene.bounds().size())));
+    if (sampleView) mImportanceReady = true;   // computed below, before the draws
     writeUniforms(plan, in);
     // Progressive sums gather until they reach atlas.target_samples; without progression
     // every frame is computed afresh, and only a change of inputs breaks from the last one.
@@ -284,9 +287,15 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                 {mTextures}, profiler);
         if (mSettings.filter) mDilate.drawSurfaceMask({mTextures, mUniforms}, profiler);
     }
-    if (computeImportance) {
+    if (sampleView) {
+        // The resolve draws the view's depth (its light is the last frame's and is drawn
+        // again below).
+        mResolve.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},
+                {in.outputSize}, profiler);
+        mSenderSampling.takeViewSamples(mResolve.indirect(), in.frameUniforms, profiler);
         mSenderSampling.computeImportance(mTextures, mUniforms, profiler);
-        mImportanceStale = false;
+        mViewSampledFrom = in.camera;
+        ++mViewSampleTakes;
     }
     if (plan.gather) {
         if (plan.restart) mGather.clear();
@@ -295,7 +304,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
             if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
                 // The power table follows the senders' radiance: the G-buffer's direct light,
                 // which the further bounces' tables replace every frame, and their importance.
-                const bool table = plan.drawGBuffer || mBounces > 1 || computeImportance;
+                const bool table = plan.drawGBuffer || mBounces > 1 || sampleView;
                 mSenderSampling.execute(
                         {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
             }
@@ -309,16 +318,6 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
 
     mResolve.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},
             {in.outputSize}, profiler);
-    // The view's surfaces, for the next frames' draws: taken again once the camera has moved
-    // far enough (scene::viewMovedFarFrom) for the draw to follow it.
-    if (drawsByImportance() &&
-            (!mViewSampledFrom || scene::viewMovedFarFrom(*mViewSampledFrom, in.camera,
-                                          glm::length(in.scene.bounds().size())))) {
-        mSenderSampling.takeViewSamples(mResolve.indirect(), in.frameUniforms, profiler);
-        mViewSampledFrom = in.camera;
-        mImportanceStale = true;
-        ++mViewSampleTakes;
-    }
     mDebugView = plan.view;
     if (mDebugView >= 0) {
         mDebugViewPass.execute({in.scene, mGeometry, in.frameUniforms, mUniforms, mTextures},

@@ -116,10 +116,9 @@ private:
     int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
     bool mConverging = false;          // GiOutputs::converging of the last frame
 
-    // atlas.importance: the view the senders' importance was last computed for, whether the
-    // view samples taken since need it computed again, and whether the layer holds it.
+    // atlas.importance: the view the senders' importance was last computed for, and whether
+    // the layer holds it.
     std::optional<scene::CameraView> mViewSampledFrom;
-    bool mImportanceStale = false;
     bool mImportanceReady = false;
     int mViewSampleTakes = 0;
 
