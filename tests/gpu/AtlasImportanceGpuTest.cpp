@@ -2,8 +2,8 @@
 // where most of a scene's reflected power cannot reach what the camera sees (the open-front
 // box's sunlit ground outside), the draw by power alone spends most samples there; the
 // importance draw puts them where the view receives their light, carrying less each, so the
-// estimate stays unbiased. The view's surfaces are read from the resolve pass' view depth and
-// taken again when the camera moves far enough.
+// estimate stays unbiased. The view's surfaces are read from the resolve pass' view depth, at
+// the first gather and again when the camera moves far enough or the scene changes.
 #include "AtlasGpuTestSupport.h"
 
 #include "reference/ImageMetrics.h"

@@ -19,7 +19,7 @@
 // senders the view's surfaces can see are drawn more often and carry less each, so the
 // estimate stays unbiased and the view's noise falls where most of the power goes elsewhere
 // (a sunlit ground outside a room).
-//  - view samples (takeViewSamples, after a resolve): the surfaces at the centres of
+//  - view samples (takeViewSamples, from a resolve's depth): the surfaces at the centres of
 //    ATLAS_VIEW_SAMPLES_PER_SIDE^2 cells of the camera's image, from the resolve's view depth.
 //  - importance (computeImportance): per texel and side, the gather's kernel without
 //    visibility summed over those surfaces, into an RG32F layer of the atlas' size.
