@@ -335,7 +335,8 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "average each texel's indirect light with its 3x3 neighbours on the same surface",
                 [](Settings& s) -> bool& { return s.atlas.filter; }),
         boolSetting("atlas.importance",
-                "draw the gather's senders by power x what the camera's view can receive of it",
+                "draw the gather's senders by power x what the camera's view can receive of it "
+                "(less noise in view, more elsewhere: the lit atlas then depends on the view)",
                 [](Settings& s) -> bool& { return s.atlas.importance; }),
         intSetting("atlas.gutter", "empty texels between atlas charts", 2, 16,
                 [](Settings& s) -> int& { return s.atlas.gutter; }),

@@ -135,8 +135,9 @@ struct AtlasSettings {
     int gutter = 2;               // atlas.gutter: empty texels between charts
     bool filter = true;           // atlas.filter: each texel's E_ind averaged over the 3x3
                                   // texels of its own surface (shaders/atlas/dilate.frag)
-    bool importance = true;       // atlas.importance: the area estimator draws senders by power
-                                  // x what the camera's view can receive of it
+    bool importance = false;      // atlas.importance: the area estimator draws senders by power
+                                  // x what the camera's view can receive of it (the atlas' light
+                                  // then depends on the view in its noise; off, it does not)
     bool cache = true;            // atlas.cache: keep built atlases on disk
     bool operator==(const AtlasSettings&) const = default;
 };

@@ -1,4 +1,5 @@
-// The atlas gather's senders drawn by the view's importance (atlas.importance, the default):
+// The atlas gather's senders drawn by the view's importance (atlas.importance=1; off by default,
+// where the lit atlas does not depend on the view: AtlasGpuTest.IndirectLightDoesNotDependOnTheView):
 // where most of a scene's reflected power cannot reach what the camera sees (the open-front
 // box's sunlit ground outside), the draw by power alone spends most samples there; the
 // importance draw puts them where the view receives their light, carrying less each, so the
@@ -72,7 +73,9 @@ TEST_F(AtlasGpuTest, TheViewSamplesLieOnTheSurfacesTheCameraSees) {
     constexpr float kLampHeight = 0.6f;
     const scene::Scene scene =
             floorUnderLamp(0.15f, kLampHeight, {0.4f, 0.0f}, 1.5f, {0.0f, 1.4f, 1.8f});
-    AtlasFrame frame(scene, atlasSettings());
+    Settings settings = atlasSettings();
+    settings.atlas.importance = true;
+    AtlasFrame frame(scene, settings);
     frame.render({64, 48}, render::OutputComponent::Indirect);
     ASSERT_EQ(frame.gi().viewSampleTakes(), 1);
     const std::vector<glm::vec4> samples = frame.gi().senderSampling().readViewSamples();
