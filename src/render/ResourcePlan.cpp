@@ -267,9 +267,9 @@ ResourcePlan planResources(const scene::Scene& scene, const std::vector<scene::L
     plan.atlasMemory = atlas::AtlasTextures::memoryFor(
             plan.atlasResolution, atlas::AtlasTextures::needsBackSides(scene),
             settings.giBounces);
-    if (settings.atlas.importance && settings.atlas.estimator == ATLAS_ESTIMATOR_AREA) {
-        plan.atlasMemory.push_back(
-                atlas::AtlasSenderSamplingPass::importanceMemoryFor(plan.atlasResolution));
+    for (gl::MemoryItem& item : atlas::AtlasSenderSamplingPass::importanceMemoryFor(
+                 settings.atlas, plan.atlasResolution)) {
+        plan.atlasMemory.push_back(std::move(item));
     }
     plan.shadowMemory = ShadowPass::memoryFor(plannedLights(lights, plan), settings.shadow);
     return plan;

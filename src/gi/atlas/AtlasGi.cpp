@@ -29,8 +29,8 @@ int skyDirections(const GiFrameInputs& in) {
 // The atlas layers' memory, with the senders' importance layer when the draw uses it.
 std::vector<gl::MemoryItem> atlasMemoryFor(const AtlasSettings& s, bool backSides, int bounces) {
     std::vector<gl::MemoryItem> items = AtlasTextures::memoryFor(s.resolution, backSides, bounces);
-    if (s.importance && s.estimator == ATLAS_ESTIMATOR_AREA) {
-        items.push_back(AtlasSenderSamplingPass::importanceMemoryFor(s.resolution));
+    for (gl::MemoryItem& item : AtlasSenderSamplingPass::importanceMemoryFor(s, s.resolution)) {
+        items.push_back(std::move(item));
     }
     return items;
 }
@@ -193,7 +193,7 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
 }
 
 bool AtlasGi::drawsByImportance() const {
-    return mSettings.importance && mSettings.estimator == ATLAS_ESTIMATOR_AREA;
+    return AtlasSenderSamplingPass::drawsByImportance(mSettings);
 }
 
 const OccupancyVolume* AtlasGi::visibilityOccupancy(const GiFrameInputs& in) {

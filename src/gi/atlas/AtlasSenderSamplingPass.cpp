@@ -17,8 +17,14 @@ std::size_t blocksPerRow(int resolution) {
 
 } // namespace
 
-gl::MemoryItem AtlasSenderSamplingPass::importanceMemoryFor(int resolution) {
-    return {"atlas/importance", gl::textureBytes(GL_RG32F, {resolution, resolution, 1}, 1)};
+bool AtlasSenderSamplingPass::drawsByImportance(const AtlasSettings& settings) {
+    return settings.importance && settings.estimator == ATLAS_ESTIMATOR_AREA;
+}
+
+std::vector<gl::MemoryItem> AtlasSenderSamplingPass::importanceMemoryFor(
+        const AtlasSettings& settings, int resolution) {
+    if (!drawsByImportance(settings)) return {};
+    return {{"atlas/importance", gl::textureBytes(GL_RG32F, {resolution, resolution, 1}, 1)}};
 }
 
 bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& error) {

@@ -30,6 +30,7 @@
 //          layer at BIND_TEX_ATLAS_IMPORTANCE.
 #pragma once
 
+#include "core/Settings.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
 #include "gl/MemoryRegistry.h"
@@ -51,8 +52,13 @@ public:
         int bounce = 0;                    // whose senders: textures.senderRadiance(bounce)
     };
 
-    // The importance layer's memory at `resolution` (atlas.importance).
-    [[nodiscard]] static gl::MemoryItem importanceMemoryFor(int resolution);
+    // Whether `settings` draw the senders by the view's importance (atlas.importance with the
+    // area estimator, the only one that draws senders).
+    [[nodiscard]] static bool drawsByImportance(const AtlasSettings& settings);
+    // The importance layer's memory for an atlas of `resolution` texels a side: one item when
+    // `settings` draw by importance, none otherwise.
+    [[nodiscard]] static std::vector<gl::MemoryItem> importanceMemoryFor(
+            const AtlasSettings& settings, int resolution);
 
     bool init(gl::ShaderLibrary& shaders, std::string& error);
     // Rebuilds the power table from the G-buffer when asked to (or when the atlas resolution
