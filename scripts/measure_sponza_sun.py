@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Voxel GI's indirect energy in Sponza under a sun at three elevations, against the path
 tracer, for the light injection and voxel sizes that decide it: the defaults (one level of
-128^3 voxels of 0.32 m, four light pixels per finest voxel), injection at two light pixels
+128^3 voxels of 0.32 m voxelized at four samples a raster pixel, four light pixels per finest
+voxel), voxelization at one sample a pixel (voxel.msaa=1), injection at two light pixels
 per voxel (233), the diffuse cones reading the surface they meet (voxel.light_read=surface)
 and one level of 256^3 voxels of 0.16 m (voxel.resolution=64, voxel.one_level_limit=256: the
 quality preset's level). The camera is the suite's sponza_sun view (assets/scene_suite/README.md); the
@@ -29,11 +30,12 @@ SUNS = [("0.2,-1,0.3", "the suite's sun (elevation 70 degrees)"),
         ("0,-1,0", "straight down")]
 BASE = {"render.plan": "adaptive", "material.specular": 0}
 CONFIGS = [("defaults (128^3 of 0.32 m, four light pixels per voxel)", {}),
+           ("one voxelization sample a pixel (voxel.msaa=1)", {"voxel.msaa": 1}),
            ("two light pixels per voxel", {"voxel.inject_resolution": 233}),
            ("voxel.light_read=surface", {"voxel.light_read": "surface"}),
            ("voxel.resolution=64 voxel.one_level_limit=256 (256^3 of 0.16 m)",
             {"voxel.resolution": 64, "voxel.one_level_limit": 256})]
-PICTURED = [0, 2, 3]
+PICTURED = [0, 3, 4]
 # --light-read: the anisotropic voxels' two light reads (voxel.light_read) beside the default.
 LIGHT_READ_CONFIGS = [("default (isotropic voxels)", {}),
                       ("voxel.anisotropic=1 (light read as the cone sees the faces)",

@@ -6,6 +6,11 @@
 // a voxel of one flat surface knows where in it that surface lies. With voxel.anisotropic the
 // area is also summed per face of the voxel, projected onto the faces the surface faces
 // (directional_build.comp).
+// With voxel.msaa the raster has several samples per pixel: a fragment runs wherever the
+// surface covers one of them, stands for the area of those it covers, and is read (material,
+// position) at their centroid, a point of the surface inside the pixel, so a sliver of a
+// surface that passes between pixel centres is voxelized too, into the voxel it lies in.
+// Without it gl_NumSamples is 1, the mask one bit and the centroid the pixel's centre.
 #include "../common/material.glsl"
 #include "../common/vertex_data.glsl"
 #include "../common/voxel_cascade.glsl"
@@ -26,24 +31,27 @@ flat in int rasterLevel;
 
 void main() {
     GpuMaterial m = materials[drawMaterial];
-    vec4 baseColor = materialBaseColor(m, vin.texcoord0, vin.texcoord1, vin.color);
+    vec4 baseColor = materialBaseColor(m, interpolateAtCentroid(vin.texcoord0),
+            interpolateAtCentroid(vin.texcoord1), interpolateAtCentroid(vin.color));
     if (materialCutOut(m, baseColor.a)) discard;
     vec3 reflectance = voxelReflectance(m, baseColor.rgb);
+    vec3 position = interpolateAtCentroid(vin.position);
     // With a raster per level (voxelize.geom), a fragment in a finer level's region is that
     // level's.
-    int level = finestLevel(vin.position);
+    int level = finestLevel(position);
     if (level < 0 || (rasterLevel >= 0 && level != rasterLevel)) discard;
-    ivec3 texel = voxelTexel(vin.position, level);
+    ivec3 texel = voxelTexel(position, level);
     vec3 n = normalize(vin.normal);
     float size = levelVoxelSize(level);
     vec3 centre = levelOrigin(level) +
             (vec3(texel - ivec3(0, 0, level * voxelResolution())) + 0.5) * size;
-    float planeOffset = clamp(dot(vin.position - centre, n) / size, -1.0, 1.0);
+    float planeOffset = clamp(dot(position - centre, n) / size, -1.0, 1.0);
     // A raster pixel is 1/multiplier of the rasterized level's voxel edge (the coarsest
     // level's with one raster); in this voxel's face areas:
     int rasterized = rasterLevel >= 0 ? rasterLevel : voxelLevels() - 1;
     float pixelEdge = levelVoxelSize(rasterized) / size;
-    float area = voxel.raster.y * pixelEdge * pixelEdge / max(projectedCosine, 0.577);
+    float covered = float(bitCount(gl_SampleMaskIn[0])) / float(gl_NumSamples);
+    float area = voxel.raster.y * covered * pixelEdge * pixelEdge / max(projectedCosine, 0.577);
     VOXEL_LOCKED_AVERAGE(texel, {
         vec4 albedo = imageLoad(voxelAlbedo, texel);
         vec4 normal = imageLoad(voxelNormal, texel);

@@ -209,6 +209,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> int& { return s.voxel.levels; }),
         intSetting("voxel.multiplier", "voxelization raster resolution / voxel resolution", 1, 16,
                 [](Settings& s) -> int& { return s.voxel.multiplier; }),
+        powerOfTwoSetting("voxel.msaa",
+                "samples per voxelization raster pixel (power of two; 0 = the plan's: 4 with "
+                "render.plan=adaptive, 1 with fixed): a surface that covers a sample but not "
+                "the pixel's centre is voxelized too, with the area of its samples",
+                1, 8, Zero::Allowed, [](Settings& s) -> int& { return s.voxel.msaa; }),
         boolSetting("voxel.raster_per_level",
                 "rasterize each cascade level over its own extent at voxel.resolution x "
                 "voxel.multiplier (0: one raster over the coarsest level, which gives the finest "

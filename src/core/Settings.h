@@ -58,6 +58,9 @@ struct VoxelSettings {
                                   // at its finest voxel, not a cascade; 0 = always a cascade
     int levels = 3;               // voxel.cascades: l, nested levels, each twice the previous edge
     int multiplier = 8;           // voxel.multiplier: voxelization raster = v x this
+    int msaa = 0;                 // voxel.msaa: samples per voxelization raster pixel (0 = the
+                                  // plan's: 4 adaptive, 1 fixed); a fragment stands for the
+                                  // surface its covered samples hold
     bool rasterPerLevel = false;  // voxel.raster_per_level: each level rasterized over its
                                   // own extent, not the finer levels through the coarsest
     int injectResolution = 0;     // voxel.inject_resolution: light-view pixels; 0 = the

@@ -40,6 +40,7 @@ struct VoxelPlan {
     bool clampCentre = false;
     int injectResolution = 0;    // light-view pixels per side
     int multiplier = 0;          // voxelization raster pixels per voxel edge (0: the setting's)
+    int msaa = 1;                // voxel.msaa resolved: samples per raster pixel
     int cones = VOXEL_CONES_RINGS;   // voxel.cones resolved: the adaptive plan's 19, the fixed's 9
     float coneAngle = 0.0f;          // voxel.cone_angle (0: the set's own aperture)
     [[nodiscard]] float voxelSize(int level) const {

@@ -234,6 +234,28 @@ TEST(ResourcePlan, ConesAreNineteenOnTheAdaptivePlanAndTheThesisNineOnTheFixed) 
             VOXEL_CONES_THESIS);
 }
 
+TEST(ResourcePlan, VoxelizationHasFourSamplesAPixelOnTheAdaptivePlanAndOneOnTheFixed) {
+    const scene::Scene box = test::loadCornellBox();
+    const auto samples = [&](const Settings& s) {
+        const ResourcePlan plan = planResources(box, box.lights, s, startEye(box));
+        EXPECT_EQ(applyPlan(s, plan).voxel.msaa, plan.voxel.msaa);
+        return plan.voxel.msaa;
+    };
+    Settings requested = adaptive(32);
+    EXPECT_EQ(requested.voxel.msaa, 0);
+    EXPECT_EQ(samples(requested), 4);
+    Settings fixed = test::thesisAllocation();
+    EXPECT_EQ(samples(fixed), 1);
+    // A count the user names is kept on either plan.
+    fixed.voxel.msaa = 2;
+    EXPECT_EQ(samples(fixed), 2);
+    requested.voxel.msaa = 1;
+    EXPECT_EQ(samples(requested), 1);
+    EXPECT_NE(describePlan(planResources(box, box.lights, requested, startEye(box)))
+                      .find("voxelized with 1 sample a raster pixel"),
+            std::string::npos);
+}
+
 TEST(ResourcePlan, TheDescriptionNamesEachPlansConeSet) {
     const scene::Scene box = test::loadCornellBox();
     const Settings requested = adaptive(32);

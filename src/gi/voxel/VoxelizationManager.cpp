@@ -66,6 +66,13 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
                 " texels exceed GL_MAX_3D_TEXTURE_SIZE " + std::to_string(max3D);
         return false;
     }
+    GLint maxSamples = 0;
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_SAMPLES, &maxSamples);
+    if (s.msaa > std::max(maxSamples, 1)) {
+        error = "voxel.msaa: " + std::to_string(s.msaa) +
+                " samples exceed GL_MAX_FRAMEBUFFER_SAMPLES " + std::to_string(maxSamples);
+        return false;
+    }
     GLint maxViewport[2] = {0, 0};
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
     if (s.resolution * s.multiplier > std::min(maxViewport[0], maxViewport[1])) {
@@ -213,6 +220,7 @@ void VoxelizationManager::rememberContent(const GiFrameInputs& in, Content conte
 void VoxelizationManager::voxelize(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     using DrawSet = scene::GpuScene::DrawSet;
     const int rasterSize = mSettings.resolution * mSettings.multiplier;
+    const int samples = std::max(mSettings.msaa, 1);   // 0 (the plan's) resolves before here
     const bool split = mSettings.cache && in.scene.hasDynamicGeometry();
     if (!split) mStaticCache.release();
     if (split && mStaticCacheValid) {
@@ -224,7 +232,8 @@ void VoxelizationManager::voxelize(const GiFrameInputs& in, gl::GpuProfiler& pro
             gl::GpuScope scope(profiler, "voxel/clear");
             mTextures.clear();
         }
-        mVoxelize.execute({in.scene, mUniforms, rasterSize, split ? DrawSet::Static : DrawSet::All},
+        mVoxelize.execute({in.scene, mUniforms, rasterSize, samples,
+                                   split ? DrawSet::Static : DrawSet::All},
                 {mTextures}, profiler);
         if (split) {
             gl::GpuScope scope(profiler, "voxel/save-static");
@@ -233,7 +242,8 @@ void VoxelizationManager::voxelize(const GiFrameInputs& in, gl::GpuProfiler& pro
         }
     }
     if (split) {
-        mVoxelize.execute({in.scene, mUniforms, rasterSize, DrawSet::Dynamic}, {mTextures}, profiler);
+        mVoxelize.execute({in.scene, mUniforms, rasterSize, samples, DrawSet::Dynamic}, {mTextures},
+                profiler);
     }
 }
 

@@ -15,10 +15,13 @@ bool VoxelizePass::init(gl::ShaderLibrary& shaders, std::string& error) {
 
 void VoxelizePass::execute(const Inputs& in, const Outputs& out, gl::GpuProfiler& profiler) {
     gl::GpuScope scope(profiler, "voxel/voxelize");
-    if (mSize != in.rasterSize) {
+    if (mSize != in.rasterSize || mSamples != in.samples) {
         mSize = in.rasterSize;
+        mSamples = in.samples;
         glNamedFramebufferParameteri(mFramebuffer.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, mSize);
         glNamedFramebufferParameteri(mFramebuffer.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, mSize);
+        glNamedFramebufferParameteri(mFramebuffer.id(), GL_FRAMEBUFFER_DEFAULT_SAMPLES,
+                mSamples > 1 ? mSamples : 0);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
     glViewport(0, 0, mSize, mSize);

@@ -20,6 +20,7 @@ public:
         const scene::GpuScene& scene;      // world-space triangles (m), materials
         const gl::Buffer& voxelUniforms;   // VoxelUniforms, std140: placement, raster area
         int rasterSize;                    // pixels per side: v x voxel.multiplier
+        int samples;                       // per pixel (voxel.msaa)
         scene::GpuScene::DrawSet draws = scene::GpuScene::DrawSet::All;   // which instances
     };
     struct Outputs {
@@ -35,6 +36,7 @@ private:
     gl::ProgramRef mProgram;
     gl::Framebuffer mFramebuffer;   // no attachments: rasterization only
     int mSize = 0;
+    int mSamples = 0;
 };
 
 } // namespace gi::voxel
