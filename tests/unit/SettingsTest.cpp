@@ -97,6 +97,13 @@ TEST(Settings, AppliesAndValidates) {
     EXPECT_TRUE(applySetting(settings, "voxel.resolution=64", error)) << error;
     EXPECT_FALSE(applySetting(settings, "vpl.svo_resolution=100", error));
     EXPECT_TRUE(applySetting(settings, "vpl.svo_resolution=256", error)) << error;
+    // Voxelization samples a pixel: a power of two up to 8, or 0 for the plan's.
+    EXPECT_FALSE(applySetting(settings, "voxel.msaa=3", error));
+    EXPECT_NE(error.find("power of two"), std::string::npos) << error;
+    EXPECT_FALSE(applySetting(settings, "voxel.msaa=16", error));
+    EXPECT_TRUE(applySetting(settings, "voxel.msaa=2", error)) << error;
+    EXPECT_EQ(settings.voxel.msaa, 2);
+    EXPECT_TRUE(applySetting(settings, "voxel.msaa=0", error)) << error;
 }
 
 TEST(Settings, HelpListsEveryKey) {
