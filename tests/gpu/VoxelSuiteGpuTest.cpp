@@ -63,6 +63,37 @@ double meanIndirect(const scene::Scene& scene, const Settings& settings, int ind
     return image.rgb.empty() ? 0.0 : sum / double(image.rgb.size());
 }
 
+// The defaults with Lambertian materials, as the path tracer renders them.
+Settings lambertian() {
+    Settings settings;
+    settings.specular = 0.0f;
+    return settings;
+}
+
+// `format` with one number in it, for printErrors' label.
+std::string label(const char* format, double value) {
+    char text[128];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// One line of a test's figures: `what`, then relative RMSE and energy ratio.
+void printErrors(const std::string& what, const reference::ImageErrors& errors) {
+    std::printf("%s: relative RMSE %.3f, energy ratio %.3f\n", what.c_str(), errors.relativeRmse,
+            errors.energyRatio);
+}
+
+// The scene's voxel GI at `settings` against the path tracer, printed as `what`, held to a
+// relative RMSE under maxRmse and an energy ratio between lowEnergy and highEnergy.
+void expectVoxelWithin(const scene::Scene& scene, const Settings& settings,
+        const std::string& what, double maxRmse, double lowEnergy, double highEnergy) {
+    const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
+    printErrors(what, errors);
+    EXPECT_LT(errors.relativeRmse, maxRmse) << what;
+    EXPECT_GT(errors.energyRatio, lowEnergy) << what;
+    EXPECT_LT(errors.energyRatio, highEnergy) << what;
+}
+
 class VoxelSuiteGpuTest : public GpuTest {};
 
 // Two closed rooms share a wall one finest voxel thick; the light is in one of them, so the
@@ -74,8 +105,7 @@ class VoxelSuiteGpuTest : public GpuTest {};
 // and 0.017 with anisotropic ones.
 TEST_F(VoxelSuiteGpuTest, AnisotropicVoxelsKeepTheWallBetweenTwoRooms) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
-    Settings settings;
-    settings.specular = 0.0f;
+    Settings settings = lambertian();
     settings.voxel.pyramidMips = 0;
     settings.voxel.oneLevelLimit = 0;   // the cascade, whose coarser levels hold both rooms
     for (const bool anisotropic : {false, true}) {
@@ -99,8 +129,7 @@ TEST_F(VoxelSuiteGpuTest, AnisotropicVoxelsKeepTheWallBetweenTwoRooms) {
 TEST_F(VoxelSuiteGpuTest, SurfaceLightReadBringsTheLitRoomCloserToThePathTracer) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
     const reference::ReferenceResult truth = referenceIndirect(scene);
-    Settings settings;
-    settings.specular = 0.0f;
+    Settings settings = lambertian();
     for (const bool anisotropic : {false, true}) {
         settings.voxel.anisotropic = anisotropic;
         settings.voxel.lightRead = LIGHT_READ_CONE;
@@ -124,14 +153,7 @@ TEST_F(VoxelSuiteGpuTest, SurfaceLightReadBringsTheLitRoomCloserToThePathTracer)
 // 0.383 / 0.887 with one average, 0.210 / 0.996 by faces).
 TEST_F(VoxelSuiteGpuTest, PyramidReadByFacesLightsTheSpotBoxAsThePathTracer) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_spot.gltf");
-    Settings settings;
-    settings.specular = 0.0f;
-    const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
-    std::printf("spot-lit box: relative RMSE %.3f, energy ratio %.3f\n", errors.relativeRmse,
-            errors.energyRatio);
-    EXPECT_LT(errors.relativeRmse, 0.30);
-    EXPECT_GT(errors.energyRatio, 0.9);
-    EXPECT_LT(errors.energyRatio, 1.1);
+    expectVoxelWithin(scene, lambertian(), "spot-lit box", 0.30, 0.9, 1.1);
 }
 
 // The adaptive plan holds the two rooms in one scene-centred level of 64^3
@@ -141,8 +163,7 @@ TEST_F(VoxelSuiteGpuTest, PyramidReadByFacesLightsTheSpotBoxAsThePathTracer) {
 // voxel, lets more through.
 TEST_F(VoxelSuiteGpuTest, OneLevelKeepsTheDarkRoomUnderFivePercent) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/two_rooms_thin_wall.gltf");
-    Settings settings;
-    settings.specular = 0.0f;
+    Settings settings = lambertian();
     double leak[2] = {0.0, 0.0};
     for (const int limit : {0, 128}) {
         settings.voxel.oneLevelLimit = limit;
@@ -162,8 +183,7 @@ TEST_F(VoxelSuiteGpuTest, OneLevelKeepsTheDarkRoomUnderFivePercent) {
 // its light (96x96 against the path tracer: energy 0.966 at one voxel, 1.007 at two).
 TEST_F(VoxelSuiteGpuTest, LargerConeOffsetGathersMoreOfTheCornellBoxsLight) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_classic.gltf");
-    Settings settings;
-    settings.specular = 0.0f;
+    Settings settings = lambertian();
     settings.voxel.coneOffset = 1.0f;
     const double near = meanIndirect(scene, settings, 0);
     settings.voxel.coneOffset = 2.0f;
@@ -181,15 +201,10 @@ TEST_F(VoxelSuiteGpuTest, LargerConeOffsetGathersMoreOfTheCornellBoxsLight) {
 TEST_F(VoxelSuiteGpuTest, ClosedWhiteBoxKeepsItsIndirectEnergy) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/closed_white_box.gltf");
     for (const int plan : {PLAN_FIXED, PLAN_ADAPTIVE}) {
-        Settings settings;
-        settings.specular = 0.0f;
+        Settings settings = lambertian();
         settings.plan = plan;
-        const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
-        std::printf("closed white box, plan %d: relative RMSE %.3f, energy ratio %.3f\n", plan,
-                errors.relativeRmse, errors.energyRatio);
-        EXPECT_GT(errors.energyRatio, 0.9) << "plan " << plan;
-        EXPECT_LT(errors.energyRatio, 1.1) << "plan " << plan;
-        EXPECT_LT(errors.relativeRmse, 0.12) << "plan " << plan;
+        expectVoxelWithin(scene, settings, label("closed white box, plan %.0f", plan), 0.12, 0.9,
+                1.1);
     }
 }
 
@@ -203,14 +218,9 @@ TEST_F(VoxelSuiteGpuTest, ClosedWhiteBoxKeepsItsIndirectEnergy) {
 // where they differ.
 TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintKeepsTheClosedBoxEnergy) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/closed_white_box.gltf");
-    Settings settings;
-    settings.specular = 0.0f;
-    const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
-    std::printf("closed white box, footprint %.2f: relative RMSE %.3f, energy ratio %.3f\n",
-            settings.voxel.footprint, errors.relativeRmse, errors.energyRatio);
-    EXPECT_GT(errors.energyRatio, 0.97);
-    EXPECT_LT(errors.energyRatio, 1.03);
-    EXPECT_LT(errors.relativeRmse, 0.06);
+    const Settings settings = lambertian();
+    expectVoxelWithin(scene, settings,
+            label("closed white box, footprint %.2f", settings.voxel.footprint), 0.06, 0.97, 1.03);
 }
 
 // The default footprint against the thesis' on the classic Cornell box, whose lamp 1 cm under
@@ -218,15 +228,13 @@ TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintKeepsTheClosedBoxEnergy) {
 // ceiling and walls (scoreboard form, 128x128: 0.228 at energy 0.984 against 0.305 at 0.932).
 TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintBeatsTheThesisReadOnTheCornellBox) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_classic.gltf");
-    Settings settings;
-    settings.specular = 0.0f;
+    Settings settings = lambertian();
     const float defaultFootprint = settings.voxel.footprint;
     double thesisError = 0.0;
     for (const float footprint : {1.0f, defaultFootprint}) {
         settings.voxel.footprint = footprint;
         const reference::ImageErrors errors = voxelAgainstReference(scene, settings);
-        std::printf("classic Cornell box, footprint %.2f: relative RMSE %.3f, energy ratio "
-                    "%.3f\n", footprint, errors.relativeRmse, errors.energyRatio);
+        printErrors(label("classic Cornell box, footprint %.2f", footprint), errors);
         if (footprint == 1.0f) {
             thesisError = errors.relativeRmse;
         } else {
