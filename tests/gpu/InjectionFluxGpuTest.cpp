@@ -104,10 +104,11 @@ TEST_F(InjectionFluxGpuTest, CeilingTakesThePointLightsFluxAtEveryVoxelSize) {
 // Forty strips 3 mm wide at 2.3 cm spacing (so they sit at every offset across the voxels),
 // lit straight down by a sun, in the adaptive plan's one level of 128^3 voxels (8.6 mm: a
 // strip is 0.35 voxels wide), voxelized through its raster of 2 pixels per voxel edge. The
-// light views, at 4 pixels per voxel edge, see every strip. With one sample a pixel
-// (voxel.msaa=1) the raster's samples lie half a voxel apart and miss a strip's voxels
-// whenever it runs between them: the voxels held 0.68 of the flux. With the plan's four
-// samples a pixel they hold it all.
+// light views see every strip (the plan's have 4 pixels per voxel edge; these, 0.3 mm
+// pixels, inject each strip's flux exactly). With one sample a pixel (voxel.msaa=1) the
+// raster's samples lie half a voxel apart and miss a strip's voxels whenever it runs between
+// them: the voxels hold 0.66 of the flux. With the plan's four samples a pixel, all of it
+// (0.997).
 TEST_F(InjectionFluxGpuTest, ThinStripsKeepTheSunsFlux) {
     scene::Scene scene;
     scene::Material grey;
