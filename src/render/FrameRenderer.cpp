@@ -255,6 +255,7 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
             needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
     const int bvhRayIterations = updateGiBvh(profiler);
     GiOutputs gi;
+    mLastIndirect = {};
     if (mGi) {
         const DebugView debugView = outputAvailable(output, mMode)
                                             ? outputEntry(output).debugView
@@ -276,6 +277,7 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     } else {
         mTemporal.reset();
     }
+    if (mGi) mLastIndirect = {mGi->outputs().indirect, gi.indirect, gi.size};
     if (gi.debugImage) {
         glCopyImageSubData(gi.debugImage->id(), GL_TEXTURE_2D, 0, 0, 0, 0, mTarget.color().id(),
                 GL_TEXTURE_2D, 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);

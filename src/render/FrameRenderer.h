@@ -73,6 +73,18 @@ public:
     const gl::Texture& radiance() const { return mTarget.color(); }
     // 1 / pre-exposure for radiometric outputs, 1 for the other debug views.
     float radianceScale() const;
+
+    // The last frame's screen-space indirect irradiance (GiOutputs::indirect: rgb = E_ind
+    // times the pre-exposure, a = view depth, 0 = empty) as the technique gave it and as the
+    // temporal filter passed it on (the same texture without the filter); null without GI,
+    // valid until the next render. Both come from one voxelization, whose averages depend on
+    // the order its fragments arrive in, so they differ by the filter alone.
+    struct IndirectImages {
+        const gl::Texture* technique = nullptr;
+        const gl::Texture* filtered = nullptr;
+        glm::ivec2 size{0};
+    };
+    [[nodiscard]] IndirectImages lastIndirect() const { return mLastIndirect; }
     glm::ivec2 renderSize() const { return mRenderSize; }
     const scene::GpuScene& gpuScene() const { return *mScene; }
 
@@ -139,6 +151,7 @@ private:
     ForwardPass mForward;
     TemporalFilter mTemporal;            // gi.temporal_filter
     std::uint64_t mTemporalGeometry = 0; // GpuScene::geometryVersion() of its last frame
+    IndirectImages mLastIndirect;
 };
 
 } // namespace gi::render
