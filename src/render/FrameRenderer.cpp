@@ -255,7 +255,6 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
             needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
     const int bvhRayIterations = updateGiBvh(profiler);
     GiOutputs gi;
-    mLastIndirect = {};
     if (mGi) {
         const DebugView debugView = outputAvailable(output, mMode)
                                             ? outputEntry(output).debugView
@@ -277,7 +276,8 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     } else {
         mTemporal.reset();
     }
-    if (mGi) mLastIndirect = {mGi->outputs().indirect, gi.indirect, gi.size};
+    mLastIndirect = mGi ? IndirectImages{mGi->outputs().indirect, gi.indirect, gi.size}
+                        : IndirectImages{};
     if (gi.debugImage) {
         glCopyImageSubData(gi.debugImage->id(), GL_TEXTURE_2D, 0, 0, 0, 0, mTarget.color().id(),
                 GL_TEXTURE_2D, 0, 0, 0, 0, mRenderSize.x, mRenderSize.y, 1);
