@@ -1,15 +1,15 @@
 #!/usr/bin/env python3
 """VPL or converged atlas GI on the open-front box (assets/scene_suite/
-cornell_open_front_sun.gltf, camera 0), drawn by power alone and by the view's importance
-(vpl.importance / atlas.importance, the defaults), against the path tracer: prints relative
-RMSE and energy of the indirect light and draws the picture (the path tracer, the draw by power,
-the importance draw; below, each one's signed error: red too bright, blue too dark, in units of
-the path tracer's mean).
+cornell_open_front_sun.gltf, camera 0), drawn by power alone and by an importance (VPLs:
+vpl.importance, the view's, the default; the atlas: atlas.importance=view and =surfaces, the
+default), against the path tracer: prints relative RMSE and energy of the indirect light and
+draws the picture (the path tracer, each draw; below, each one's signed error: red too bright,
+blue too dark, in units of the path tracer's mean).
   --mode vpl    docs/images/vpl/importance_open_front.png (docs/results-vpl.md, 'VPLs drawn
                 where the view receives their light')
   --mode atlas  docs/images/atlas_importance_open_front.png: the scoreboard's converged atlas,
                 voxel visibility, atlas.target_samples accumulated (docs/accuracy-analysis.md,
-                'The atlas gather's senders drawn where the view receives their light')
+                'The atlas gather's senders drawn where surfaces receive their light')
 
     /usr/bin/python3 scripts/measure_importance.py --mode vpl|atlas [--size 128] [--spp 1024]
 """
@@ -28,9 +28,13 @@ LUMINANCE = numpy.array([0.2126, 0.7152, 0.0722])
 BASE = {"render.plan": "adaptive", "material.specular": "0"}
 # The scoreboard's converged atlas: 1024 samples in sets of atlas.samples (100).
 CONVERGED_ATLAS = {"atlas.visibility": "voxel", "render.frames": "11"}
+# Per mode: the setting, the settings under every draw, the picture and the draws compared.
 MODES = {
-    "vpl": ("vpl.importance", {}, os.path.join("vpl", "importance_open_front.png")),
-    "atlas": ("atlas.importance", CONVERGED_ATLAS, "atlas_importance_open_front.png"),
+    "vpl": ("vpl.importance", {}, os.path.join("vpl", "importance_open_front.png"),
+            (("by power alone", "0"), ("by the view's importance", "1"))),
+    "atlas": ("atlas.importance", CONVERGED_ATLAS, "atlas_importance_open_front.png",
+              (("by power alone", "power"), ("by the view's importance", "view"),
+               ("by the surfaces' importance", "surfaces"))),
 }
 
 
@@ -42,13 +46,13 @@ def main():
     mc.add_bin_argument(parser)
     args = parser.parse_args()
     mc.use_binary(args.bin)
-    key, settings, picture = MODES[args.mode]
+    key, settings, picture, draws = MODES[args.mode]
     reference = mc.render_indirect(SCENE, "reference",
                                    dict(BASE, **{"reference.spp": str(args.spp)}),
                                    args.size).image
     mask = mc.reference_mask(reference)
     images = []
-    for name, importance in (("by power alone", "0"), ("by the view's importance", "1")):
+    for name, importance in draws:
         image = mc.render_indirect(SCENE, args.mode,
                                    dict(BASE, **settings, **{key: importance}), args.size).image
         rmse, energy = mc.errors(image, reference, mask)

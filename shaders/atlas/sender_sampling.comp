@@ -1,14 +1,19 @@
 // Senders for the area estimator, drawn in proportion to the power they send, or with
-// atlas.importance to that power times what the camera's view can receive of it
-// (AtlasSenderSamplingPass.h, sender_weight.glsl). A texel's power is a(y) mean(L(y)): its
+// atlas.importance to that power times what a set of receivers can receive of it: the surfaces
+// the camera sees (view) or the atlas' own surfaces (surfaces; AtlasSenderSamplingPass.h,
+// sender_weight.glsl). A texel's power is a(y) mean(L(y)): its
 // sample area (position.w, m^2) times the mean of its direct radiance over RGB, where the
 // G-buffer wrote it (direct.a > 0); double-sided texels add their back side's (both sides send).
 //   STEP_VIEW_SAMPLES one invocation per cell of an ATLAS_VIEW_SAMPLES_PER_SIDE^2 grid over the
 //                the camera's image: the surface at the cell's centre, rebuilt from the view
 //                depth the resolve pass wrote, and its normal from the neighbouring pixels'.
+//   STEP_SURFACE_SAMPLES one invocation per cell of an ATLAS_SURFACE_SAMPLES_PER_SIDE^2 grid
+//                over the atlas: the texel at the cell's centre where the G-buffer wrote one,
+//                weighed by the area it stands for (charts too small for the atlas' texel get
+//                finer texels), with its normal, both sides receiving if double-sided.
 //   STEP_IMPORTANCE one invocation per atlas texel: for each side, the gather's kernel without
-//                visibility, cos at the texel x cos at the view's surface / max(B, r^2), summed
-//                over the view's surfaces (the VPLs' importance, results-vpl.md).
+//                visibility, cos at the texel x cos at the receiver / max(B, r^2), summed over
+//                the receivers (the VPLs' importance, results-vpl.md).
 //   STEP_ROWS    one invocation per atlas row: prefix sums of the weights at the end of every
 //                ATLAS_SENDER_BLOCK texels, and the row's sum (two sums, sender_weight.glsl).
 //   STEP_PREFIX  one invocation: the row sums turned into prefix sums over rows.
@@ -34,8 +39,9 @@ layout(std430, binding = BIND_SSBO_ATLAS_SENDER_ROWS) buffer SenderRows {
 layout(std430, binding = BIND_SSBO_ATLAS_SENDER_BLOCKS) buffer SenderBlocks {
     vec2 blockPower[];
 };
-layout(std430, binding = BIND_SSBO_ATLAS_VIEW_SAMPLES) buffer ViewSamples {
-    vec4 viewSamples[];   // per cell: position (w = 1 where a surface is), normal facing the eye
+layout(std430, binding = BIND_SSBO_ATLAS_RECEIVERS) buffer Receivers {
+    vec4 receivers[];   // per cell: position (w = its weight, 0 where no surface is), normal
+                        // (w = 1: both sides receive)
 };
 layout(std430, binding = BIND_SSBO_ATLAS_SENDER_POOL) buffer SenderPool {
     uint pool[];
@@ -118,8 +124,24 @@ void main() {
             if (dot(n, n) > 0.0) normal = normalize(n) * (dot(n, toEye) < 0.0 ? -1.0 : 1.0);
         }
     }
-    viewSamples[2 * cell] = vec4(position, found ? 1.0 : 0.0);
-    viewSamples[2 * cell + 1] = vec4(normal, 0.0);
+    receivers[2 * cell] = vec4(position, found ? 1.0 : 0.0);
+    receivers[2 * cell + 1] = vec4(normal, 0.0);
+}
+
+#elif defined(STEP_SURFACE_SAMPLES)
+
+void main() {
+    int cell = int(gl_GlobalInvocationID.x);
+    const int perSide = ATLAS_SURFACE_SAMPLES_PER_SIDE;
+    if (cell >= perSide * perSide) return;
+    int resolution = atlas.size.x;
+    ivec2 texel = min(ivec2((vec2(cell % perSide, cell / perSide) + 0.5) * float(resolution) /
+                            float(perSide)), ivec2(resolution - 1));
+    vec4 position = texelFetch(atlasPosition, texel, 0);
+    bool found = texelFetch(atlasDirect, texel, 0).a > 0.0 && position.w > 0.0;
+    vec4 normal = texelFetch(atlasNormal, texel, 0);
+    receivers[2 * cell] = vec4(position.xyz, found ? position.w : 0.0);
+    receivers[2 * cell + 1] = vec4(normal.xyz, normal.w > 0.5 ? 1.0 : 0.0);
 }
 
 #elif defined(STEP_IMPORTANCE)
@@ -141,22 +163,24 @@ void main() {
     if (direct.a > 0.0 && position.w > 0.0 && sends) {
         vec4 normal = texelFetch(atlasNormal, t, 0);
         bool twoSided = normal.w > 0.5;
-        const int cells = ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE;
+        int cells = int(atlas.importance.y);
         for (int k = 0; k < cells; ++k) {
-            vec4 receiver = viewSamples[2 * k];
+            vec4 receiver = receivers[2 * k];
             if (receiver.w <= 0.0) continue;
             vec3 d = receiver.xyz - position.xyz;
             float r2 = dot(d, d);
             // |d| cos at the receiver and at the texel's front; the kernel is their product
             // over r^2 x max(B, r^2), without a square root.
-            float atReceiver = -dot(viewSamples[2 * k + 1].xyz, d);
+            vec4 receiverNormal = receivers[2 * k + 1];
+            float atReceiver = -dot(receiverNormal.xyz, d);
+            if (receiverNormal.w > 0.5) atReceiver = abs(atReceiver);
             float atSender = dot(normal.xyz, d);
             if (!(r2 > 0.0) || atReceiver <= 0.0) continue;
-            float kernel = atReceiver * abs(atSender) / (r2 * max(r2, atlas.sampling.z));
+            float kernel = receiver.w * atReceiver * abs(atSender) /
+                           (r2 * max(r2, atlas.importance.w));
             if (atSender > 0.0) importance.x += kernel;
             else if (twoSided) importance.y += kernel;
         }
-        importance *= atlas.importance.y;
     }
     imageStore(importanceImage, t, vec4(importance, 0.0, 0.0));
 }

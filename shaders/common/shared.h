@@ -19,7 +19,7 @@
 #define BIND_SSBO_SHADOWS           2   // GpuShadow[], one per light, same index as GpuLight
 #define BIND_SSBO_ATLAS_SENDER_ROWS 3   // vec2[R]: prefix sums over atlas rows of the texels'
                                         // a(y) mean(L(y)) I(y) (x) and a(y) mean(L(y)) (y, W/sr),
-                                        // I the view's importance (1 without atlas.importance);
+                                        // I the importance (1 with atlas.importance=power);
                                         // the last holds the totals
 #define BIND_SSBO_ATLAS_SENDER_BLOCKS 4 // vec2[R x ceil(R / ATLAS_SENDER_BLOCK)]: per row, the
                                         // same prefix sums at each block's end
@@ -50,9 +50,13 @@
                                         // (SVO_COORD_BITS per axis) per occupied leaf
 #define BIND_SSBO_SVO_LEAF_BITS     20  // build only: uint[] one bit per leaf voxel, x fastest
 #define BIND_SSBO_SVO_BUILD         21  // build only: SvoBuildState
-#define BIND_SSBO_ATLAS_VIEW_SAMPLES 22 // vec4[2 x ATLAS_VIEW_SAMPLES]: the surfaces the camera
-                                        // sees at the centres of a grid of cells, position
-                                        // (w = 1 where one is) and the normal facing the eye
+#define BIND_SSBO_ATLAS_RECEIVERS   22  // vec4[2 x cells]: the receivers atlas.importance weighs
+                                        // the senders by, per cell of a grid: position (w = its
+                                        // weight: 1 for the view's, the area in m^2 its texel
+                                        // stands for for the atlas'; 0 where none is) and
+                                        // normal (w = 1 when both sides
+                                        // receive); the surfaces the camera sees (view) or the
+                                        // atlas' own surfaces (surfaces)
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -106,7 +110,7 @@
 #define BIND_TEX_ATLAS_SUMS_BACK    16
 #define BIND_TEX_ATLAS_LIT_BACK     17
 #define BIND_TEX_ATLAS_IMPORTANCE   26  // rg32f, atlas.importance: how much of each texel's light
-                                        // the camera's view can receive, front (r) and back (g)
+                                        // its receivers can receive, front (r) and back (g)
 #define BIND_TEX_ATLAS_SURFACE_MASK 25  // r8ui, bit i set when neighbour i of the texel's 3x3
                                         // block (row order, the centre left out) lies on the
                                         // texel's own surface (atlas/surface_mask.frag)
@@ -195,7 +199,9 @@
 #define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
 #define ATLAS_SENDER_LOCAL_SIZE     64  // work-group size of atlas/sender_sampling
 #define ATLAS_VIEW_SAMPLES_PER_SIDE 16  // cells per side of the image whose surfaces weigh the
-                                        // senders' draw (atlas.importance)
+                                        // senders' draw (atlas.importance=view)
+#define ATLAS_SURFACE_SAMPLES_PER_SIDE 32 // cells per side of the atlas whose texels weigh the
+                                        // senders' draw (atlas.importance=surfaces)
 #define ATLAS_POSE_LOCAL_SIZE       64  // work-group size of atlas/follow_pose
 #define SCENE_VERTEX_FLOATS         14  // floats per GpuScene vertex (scene::SceneVertex)
 #define ATLAS_VERTEX_FLOATS         18  // floats per atlas vertex (atlas::GpuAtlasVertex)
@@ -204,6 +210,9 @@
 #define ATLAS_VISIBILITY_NONE       0   // senders are never occluded (the thesis)
 #define ATLAS_VISIBILITY_VOXEL      1   // ray march through the voxel occupancy
 #define ATLAS_VISIBILITY_BVH        2   // rays through the scene's triangles (common/bvh.glsl)
+#define ATLAS_IMPORTANCE_POWER      0   // senders drawn by the power they send alone
+#define ATLAS_IMPORTANCE_VIEW       1   // x what the surfaces the camera sees can receive of it
+#define ATLAS_IMPORTANCE_SURFACES   2   // x what the scene's surfaces can receive of it
 #define ATLAS_VIEW_DIRECT           0   // debug views of the atlas layers, seen from the camera
 #define ATLAS_VIEW_NORMAL           1
 #define ATLAS_VIEW_POSITION         2
@@ -531,9 +540,10 @@ struct AtlasUniforms {                  // std140
                                         // (W/(m^2 sr)), w = sky directions per receiver and set
     vec4 importance;                    // x = the share of the mean importance every lit texel
                                         // keeps, 0 = senders drawn by power alone (I = 1);
-                                        // y = 1 / ATLAS_VIEW_SAMPLES_PER_SIDE^2; z = 1 when
+                                        // y = cells of BIND_SSBO_ATLAS_RECEIVERS; z = 1 when
                                         // every surface sends (gi.bounces > 1), 0 when only
-                                        // directly lit texels do; w = unused
+                                        // directly lit texels do; w = the smallest r^2 (m^2)
+                                        // the importance's 1/r^2 uses
 };
 
 #ifdef __cplusplus

@@ -339,10 +339,12 @@ const std::vector<SettingSpec>& settingSpecs() {
         boolSetting("atlas.filter",
                 "average each texel's indirect light with its 3x3 neighbours on the same surface",
                 [](Settings& s) -> bool& { return s.atlas.filter; }),
-        boolSetting("atlas.importance",
-                "draw the gather's senders by power x what the camera's view can receive of it "
-                "(less noise in view, more elsewhere: the lit atlas then depends on the view)",
-                [](Settings& s) -> bool& { return s.atlas.importance; }),
+        choiceSetting("atlas.importance",
+                "draw the gather's senders by power alone, x what the camera's view can receive "
+                "of it (less noise in view, more elsewhere: the lit atlas then depends on the "
+                "view), or x what the scene's surfaces can receive of it",
+                {"power", "view", "surfaces"},
+                [](Settings& s) -> int& { return s.atlas.importance; }),
         intSetting("atlas.gutter", "empty texels between atlas charts", 2, 16,
                 [](Settings& s) -> int& { return s.atlas.gutter; }),
         boolSetting("atlas.cache", "keep built atlases in the cache directory",

@@ -1,9 +1,10 @@
-// The atlas gather's senders drawn by the view's importance (atlas.importance=1; off by default,
-// where the lit atlas does not depend on the view: AtlasGpuTest.IndirectLightDoesNotDependOnTheView):
-// where most of a scene's reflected power cannot reach what the camera sees (the open-front
-// box's sunlit ground outside), the draw by power alone spends most samples there; the
-// importance draw puts them where the view receives their light, carrying less each, so the
-// estimate stays unbiased. The view's surfaces are read from the resolve pass' view depth, at
+// The atlas gather's senders drawn by an importance (atlas.importance): where most of a scene's
+// reflected power reaches no surface (the open-front box's sunlit ground outside, whose light
+// leaves for the sky), the draw by power alone spends most samples there; the importance draws
+// put them where receivers can see them, carrying less each, so the estimate stays unbiased.
+// By the scene's own surfaces (the default) the receivers are a grid of atlas texels and the
+// lit atlas does not depend on the view (AtlasGpuTest.IndirectLightDoesNotDependOnTheView); by
+// the view they are the surfaces the camera sees, read from the resolve pass' view depth at
 // the first gather and again when the camera moves far enough or the scene changes.
 #include "AtlasGpuTestSupport.h"
 
@@ -13,6 +14,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -23,7 +25,7 @@ constexpr int kSize = 96;
 
 // The suite's converged atlas: voxel visibility, sets of atlas.samples summed to
 // atlas.target_samples.
-Settings convergedAtlas(bool importance) {
+Settings convergedAtlas(int importance) {
     Settings settings;
     settings.specular = 0.0f;   // the reference is Lambertian
     settings.atlas.cache = false;
@@ -36,8 +38,8 @@ int framesToConverge(const Settings& settings) {
     return (settings.atlas.targetSamples + settings.atlas.samples - 1) / settings.atlas.samples;
 }
 
-// Measured on llvmpipe at this size against 256 spp: 0.244 by power alone and 0.198 with the
-// importance draw, energy 0.957 and 0.953.
+// Measured on llvmpipe at this size against 256 spp: 0.244 by power alone, 0.198 by the view's
+// importance and 0.209 by the surfaces', energies 0.957, 0.953 and 0.951.
 TEST_F(AtlasGpuTest, TheOpenFrontBoxConvergesCloserToThePathTracer) {
     if (!mContext) GTEST_SKIP();
     const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_open_front_sun.gltf");
@@ -47,8 +49,10 @@ TEST_F(AtlasGpuTest, TheOpenFrontBoxConvergesCloserToThePathTracer) {
     reference.bounces = 1;
     const reference::ReferenceResult truth =
             reference::renderReference(scene, camera, kSize, kSize, reference);
-    reference::ImageErrors errors[2];
-    for (const bool importance : {false, true}) {
+    constexpr int kDraws[] = {ATLAS_IMPORTANCE_POWER, ATLAS_IMPORTANCE_VIEW,
+                              ATLAS_IMPORTANCE_SURFACES};
+    reference::ImageErrors errors[3];
+    for (const int importance : kDraws) {
         const Settings settings = convergedAtlas(importance);
         AtlasFrame frame(scene, settings);
         frame.render({kSize, kSize}, render::OutputComponent::Indirect,
@@ -57,13 +61,18 @@ TEST_F(AtlasGpuTest, TheOpenFrontBoxConvergesCloserToThePathTracer) {
         errors[importance] =
                 reference::measureImageError(frame.image(), truth.indirect, truth.coverage);
     }
-    std::printf("open-front box %dx%d, converged atlas: by power %.3f / %.3f, by importance "
-                "%.3f / %.3f (reference noise %.3f)\n",
+    std::printf("open-front box %dx%d, converged atlas: by power %.3f / %.3f, by the view "
+                "%.3f / %.3f, by the surfaces %.3f / %.3f (reference noise %.3f)\n",
             kSize, kSize, errors[0].relativeRmse, errors[0].energyRatio, errors[1].relativeRmse,
-            errors[1].energyRatio, truth.noise.indirect);
-    EXPECT_LT(errors[1].relativeRmse, errors[0].relativeRmse - 0.025);
-    // Both draws are unbiased: the same light on average, whatever the draw.
-    EXPECT_NEAR(errors[1].energyRatio, errors[0].energyRatio, 0.015);
+            errors[1].energyRatio, errors[2].relativeRmse, errors[2].energyRatio,
+            truth.noise.indirect);
+    for (const int importance : {ATLAS_IMPORTANCE_VIEW, ATLAS_IMPORTANCE_SURFACES}) {
+        EXPECT_LT(errors[importance].relativeRmse, errors[0].relativeRmse - 0.025)
+                << "atlas.importance=" << importance;
+        // Every draw is unbiased: the same light on average, whatever the draw.
+        EXPECT_NEAR(errors[importance].energyRatio, errors[0].energyRatio, 0.015)
+                << "atlas.importance=" << importance;
+    }
 }
 
 // The view's surfaces rebuilt from the resolve's view depth lie on the surfaces the camera
@@ -74,11 +83,12 @@ TEST_F(AtlasGpuTest, TheViewSamplesLieOnTheSurfacesTheCameraSees) {
     const scene::Scene scene =
             floorUnderLamp(0.15f, kLampHeight, {0.4f, 0.0f}, 1.5f, {0.0f, 1.4f, 1.8f});
     Settings settings = atlasSettings();
-    settings.atlas.importance = true;
+    settings.atlas.importance = ATLAS_IMPORTANCE_VIEW;
     AtlasFrame frame(scene, settings);
     frame.render({64, 48}, render::OutputComponent::Indirect);
     ASSERT_EQ(frame.gi().viewSampleTakes(), 1);
-    const std::vector<glm::vec4> samples = frame.gi().senderSampling().readViewSamples();
+    const std::vector<glm::vec4> samples = frame.gi().senderSampling().readReceivers();
+    ASSERT_EQ(samples.size(), std::size_t(2 * 256));
     int found = 0, onFloor = 0;
     for (std::size_t i = 0; i + 1 < samples.size(); i += 2) {
         const glm::vec4 p = samples[i];
@@ -95,15 +105,62 @@ TEST_F(AtlasGpuTest, TheViewSamplesLieOnTheSurfacesTheCameraSees) {
     EXPECT_GT(found, 64) << "of 256 cells, most see the floor";
 }
 
+// The surfaces' receivers are atlas texels at the centres of a grid over the atlas: each lies
+// on the floor (facing up) or the lamp's square (facing down), weighed by the area its texel
+// stands for, so that the cells of each surface add up to its area whatever density its chart
+// got in the atlas (the lamp's small chart gets finer texels); no view is read.
+TEST_F(AtlasGpuTest, TheSurfaceSamplesLieOnTheScenesSurfacesWeighedByTheirArea) {
+    if (!mContext) GTEST_SKIP();
+    constexpr float kLampHeight = 0.6f, kLampHalf = 0.15f, kFloorSide = 2.0f;
+    constexpr float kLampSide = 2.0f * kLampHalf;
+    const scene::Scene scene =
+            floorUnderLamp(kLampHalf, kLampHeight, {0.4f, 0.0f}, 1.5f, {0.0f, 1.4f, 1.8f});
+    Settings settings = atlasSettings();
+    settings.atlas.importance = ATLAS_IMPORTANCE_SURFACES;
+    AtlasFrame frame(scene, settings);
+    frame.render({64, 48}, render::OutputComponent::Indirect);
+    EXPECT_EQ(frame.gi().viewSampleTakes(), 0);
+    ASSERT_EQ(frame.gi().surfaceSampleTakes(), 1);
+    const std::vector<glm::vec4> samples = frame.gi().senderSampling().readReceivers();
+    constexpr int kCells = ATLAS_SURFACE_SAMPLES_PER_SIDE * ATLAS_SURFACE_SAMPLES_PER_SIDE;
+    ASSERT_EQ(samples.size(), std::size_t(2 * kCells));
+    double floorArea = 0.0, lampArea = 0.0;
+    for (std::size_t i = 0; i + 1 < samples.size(); i += 2) {
+        const glm::vec4 p = samples[i];
+        if (p.w <= 0.0f) continue;
+        const glm::vec3 n(samples[i + 1]);
+        if (std::abs(p.y) < 0.01f) {
+            floorArea += p.w;
+            EXPECT_GT(glm::dot(n, glm::vec3(0.0f, 1.0f, 0.0f)), 0.999f) << "cell " << i / 2;
+            EXPECT_LT(std::max(std::abs(p.x), std::abs(p.z)), 1.01f) << "cell " << i / 2;
+        } else {
+            lampArea += p.w;
+            EXPECT_NEAR(p.y, kLampHeight, 0.01f) << "cell " << i / 2;
+            EXPECT_GT(glm::dot(n, glm::vec3(0.0f, -1.0f, 0.0f)), 0.999f) << "cell " << i / 2;
+        }
+    }
+    // Each cell stands for (R / cells per side)^2 texels of its texel's area.
+    const double texelsPerCell = std::pow(
+            double(settings.atlas.resolution) / ATLAS_SURFACE_SAMPLES_PER_SIDE, 2.0);
+    std::printf("cells' area: floor %.4f m^2, lamp %.5f m^2\n", floorArea * texelsPerCell,
+            lampArea * texelsPerCell);
+    EXPECT_NEAR(floorArea * texelsPerCell, kFloorSide * kFloorSide, 0.1 * kFloorSide * kFloorSide);
+    EXPECT_NEAR(lampArea * texelsPerCell, kLampSide * kLampSide, 0.3 * kLampSide * kLampSide);
+}
+
 // A 2 cm step keeps the view's samples (the importance only says where to draw, so a draw
 // for a nearby view stays unbiased); a step of more than 5 % of the scene's diagonal takes
-// them again, the draw by power never.
+// them again; the draws by power and by the surfaces never take the view, and the surfaces
+// are taken once for a still scene.
 TEST_F(AtlasGpuTest, AMovedCameraTakesTheViewAgainOnlyWhenTheDrawFollowsIt) {
     if (!mContext) GTEST_SKIP();
     const scene::Scene scene = loadCornellBox();
-    for (const bool importance : {false, true}) {
+    for (const int importance :
+            {ATLAS_IMPORTANCE_POWER, ATLAS_IMPORTANCE_VIEW, ATLAS_IMPORTANCE_SURFACES}) {
         Settings settings = atlasSettings();
         settings.atlas.importance = importance;
+        const bool byView = importance == ATLAS_IMPORTANCE_VIEW;
+        const int surfaceTakes = importance == ATLAS_IMPORTANCE_SURFACES ? 1 : 0;
         AtlasFrame frame(scene, settings);
         scene::Camera step = scene.cameras[0], stride = scene.cameras[0];
         step.worldFromCamera = glm::translate(glm::mat4(1.0f), glm::vec3(0.02f, 0.0f, 0.0f)) *
@@ -111,11 +168,12 @@ TEST_F(AtlasGpuTest, AMovedCameraTakesTheViewAgainOnlyWhenTheDrawFollowsIt) {
         stride.worldFromCamera = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.0f, 0.0f)) *
                                  stride.worldFromCamera;
         frame.render({32, 32}, render::OutputComponent::Indirect, 2);
-        EXPECT_EQ(frame.gi().viewSampleTakes(), importance ? 1 : 0) << "a still camera";
+        EXPECT_EQ(frame.gi().viewSampleTakes(), byView ? 1 : 0) << "a still camera";
         frame.render({32, 32}, render::OutputComponent::Indirect, 1, step);
-        EXPECT_EQ(frame.gi().viewSampleTakes(), importance ? 1 : 0) << "a 2 cm step";
+        EXPECT_EQ(frame.gi().viewSampleTakes(), byView ? 1 : 0) << "a 2 cm step";
         frame.render({32, 32}, render::OutputComponent::Indirect, 1, stride);
-        EXPECT_EQ(frame.gi().viewSampleTakes(), importance ? 2 : 0) << "a 30 cm stride";
+        EXPECT_EQ(frame.gi().viewSampleTakes(), byView ? 2 : 0) << "a 30 cm stride";
+        EXPECT_EQ(frame.gi().surfaceSampleTakes(), surfaceTakes) << "importance " << importance;
     }
 }
 

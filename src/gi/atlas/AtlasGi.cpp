@@ -17,8 +17,8 @@ namespace {
 constexpr int kSkyDirectionsPerSet = 16;
 
 // atlas.importance: the share of the mean importance every lit texel keeps in the senders'
-// draw whatever the view sees (sender_weight.glsl), as the VPLs' draw keeps
-// (vpl::kViewIndependentShare): nothing the view's samples miss is left out of the draw.
+// draw whatever its receivers see (sender_weight.glsl), as the VPLs' draw keeps
+// (vpl::kViewIndependentShare): nothing the receivers miss is left out of the draw.
 constexpr float kImportanceFloorShare = 0.1f;
 
 // The sky's directions per set: none without a sky.
@@ -164,6 +164,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         mContent.samples = 0;
         mViewSampledFrom.reset();
         mViewSampleTakes = 0;
+        mSurfaceSampleTakes = 0;
         mSenderSampling.reserveImportance(drawsByImportance() ? mSettings.resolution : 0);
         mImportanceReady = false;
         mFrameIndex = 0;
@@ -186,9 +187,19 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
             mSettings.filter ? 1.0f : 0.0f, 0.0f);
     const glm::vec3 sky = scene::skyRadiance(in.lights) * in.scene.exposure();
     u.sky = glm::vec4(sky, float(skyDirections(in)));
-    constexpr int kCells = ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE;
+    // The importance's receivers: the view's cells, whose kernel stops growing where the
+    // estimator's does, or the atlas' cells, each standing for the surface of its cell, within
+    // which the kernel stops growing (else the texels nearest a cell's centre would draw most
+    // of the samples).
+    const bool bySurfaces = mSettings.importance == ATLAS_IMPORTANCE_SURFACES;
+    const int cells = bySurfaces
+            ? ATLAS_SURFACE_SAMPLES_PER_SIDE * ATLAS_SURFACE_SAMPLES_PER_SIDE
+            : ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE;
+    const double cellEdge = double(mSettings.resolution) / ATLAS_SURFACE_SAMPLES_PER_SIDE *
+                            double(mAtlas.texelSize);
+    const float importanceClamp = bySurfaces ? float(cellEdge * cellEdge) : estimatorConstant;
     u.importance = glm::vec4(drawsByImportance() && mImportanceReady ? kImportanceFloorShare : 0.0f,
-            1.0f / float(kCells), mBounces > 1 ? 1.0f : 0.0f, 0.0f);
+            float(cells), mBounces > 1 ? 1.0f : 0.0f, importanceClamp);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
@@ -268,15 +279,21 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     const OccupancyVolume* occupancy = visibilityOccupancy(in);
     const int bvhRayIterations = visibilityBvh(in);
     const FramePlan plan = planFrame(in, occupancy);
-    // The senders' importance follows what the camera sees in this frame: taken for the first
-    // gather, when the geometry or the lights changed (the G-buffer is drawn again), and when
-    // the camera has moved far enough (scene::viewMovedFarFrom) since. So a renderer that saw
-    // the scene move draws the same senders as one that sees it only as it is now.
-    const bool sampleView = drawsByImportance() && plan.gather &&
+    // The senders' importance by the view follows what the camera sees in this frame: taken
+    // for the first gather, when the geometry or the lights changed (the G-buffer is drawn
+    // again), and when the camera has moved far enough (scene::viewMovedFarFrom) since. So a
+    // renderer that saw the scene move draws the same senders as one that sees it only as it is
+    // now. By the surfaces it follows the G-buffer alone: where its texels lie and which send.
+    const bool byView = drawsByImportance() && mSettings.importance == ATLAS_IMPORTANCE_VIEW;
+    const bool bySurfaces =
+            drawsByImportance() && mSettings.importance == ATLAS_IMPORTANCE_SURFACES;
+    const bool sampleView = byView && plan.gather &&
             (!mViewSampledFrom || plan.drawGBuffer ||
                     scene::viewMovedFarFrom(*mViewSampledFrom, in.camera,
                             glm::length(in.scene.bounds().size())));
-    if (sampleView) mImportanceReady = true;   // computed below, before the draws
+    const bool sampleSurfaces = bySurfaces && plan.gather &&
+                                (plan.drawGBuffer || !mImportanceReady);
+    if (sampleView || sampleSurfaces) mImportanceReady = true;   // computed below, before the draws
     writeUniforms(plan, in);
     // Progressive sums gather until they reach atlas.target_samples; without progression
     // every frame is computed afresh, and only a change of inputs breaks from the last one.
@@ -297,6 +314,11 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
         mViewSampledFrom = in.camera;
         ++mViewSampleTakes;
     }
+    if (sampleSurfaces) {
+        mSenderSampling.takeSurfaceSamples(mTextures, mUniforms, profiler);
+        mSenderSampling.computeImportance(mTextures, mUniforms, profiler);
+        ++mSurfaceSampleTakes;
+    }
     if (plan.gather) {
         if (plan.restart) mGather.clear();
         for (int bounce = 0; bounce < mBounces; ++bounce) {
@@ -304,7 +326,8 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
             if (mSettings.estimator == ATLAS_ESTIMATOR_AREA) {
                 // The power table follows the senders' radiance: the G-buffer's direct light,
                 // which the further bounces' tables replace every frame, and their importance.
-                const bool table = plan.drawGBuffer || mBounces > 1 || sampleView;
+                const bool table =
+                        plan.drawGBuffer || mBounces > 1 || sampleView || sampleSurfaces;
                 mSenderSampling.execute(
                         {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
             }

@@ -53,8 +53,10 @@ public:
     const AtlasBuildInfo& buildInfo() const { return mBuildInfo; }
     const AtlasTextures& textures() const { return mTextures; }
     const AtlasSenderSamplingPass& senderSampling() const { return mSenderSampling; }
-    // atlas.importance: how many times the view's surfaces were sampled since configure.
+    // atlas.importance: how many times the view's surfaces (view) or the atlas' (surfaces)
+    // were sampled since configure.
     int viewSampleTakes() const { return mViewSampleTakes; }
+    int surfaceSampleTakes() const { return mSurfaceSampleTakes; }
 
 private:
     // What the atlas layers hold, and what they were computed from: a frame redraws the
@@ -91,7 +93,7 @@ private:
     FramePlan planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy);
     // The frame's AtlasUniforms: the only write of the buffer per frame.
     void writeUniforms(const FramePlan& plan, const GiFrameInputs& in);
-    // Whether the area estimator's senders are drawn by the view's importance.
+    // Whether the area estimator's senders are drawn by an importance (atlas.importance).
     bool drawsByImportance() const;
 
     AtlasMesh mMesh;
@@ -116,11 +118,12 @@ private:
     int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
     bool mConverging = false;          // GiOutputs::converging of the last frame
 
-    // atlas.importance: the view the senders' importance was last computed for, and whether
-    // the layer holds it.
+    // atlas.importance: the view the senders' importance was last computed for (view), and
+    // whether the layer holds an importance.
     std::optional<scene::CameraView> mViewSampledFrom;
     bool mImportanceReady = false;
     int mViewSampleTakes = 0;
+    int mSurfaceSampleTakes = 0;
 
     // Animated instances: the atlas vertices follow GpuScene's pose (AtlasPosePass).
     bool mFollowsPose = false;

@@ -4,12 +4,19 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+
 namespace gi::atlas {
 namespace {
 
 GLuint groupsFor(std::size_t invocations) {
     return GLuint((invocations + ATLAS_SENDER_LOCAL_SIZE - 1) / ATLAS_SENDER_LOCAL_SIZE);
 }
+
+constexpr std::size_t kViewCells =
+        std::size_t(ATLAS_VIEW_SAMPLES_PER_SIDE) * ATLAS_VIEW_SAMPLES_PER_SIDE;
+constexpr std::size_t kSurfaceCells =
+        std::size_t(ATLAS_SURFACE_SAMPLES_PER_SIDE) * ATLAS_SURFACE_SAMPLES_PER_SIDE;
 
 std::size_t blocksPerRow(int resolution) {
     return std::size_t((resolution + ATLAS_SENDER_BLOCK - 1) / ATLAS_SENDER_BLOCK);
@@ -18,7 +25,8 @@ std::size_t blocksPerRow(int resolution) {
 } // namespace
 
 bool AtlasSenderSamplingPass::drawsByImportance(const AtlasSettings& settings) {
-    return settings.importance && settings.estimator == ATLAS_ESTIMATOR_AREA;
+    return settings.importance != ATLAS_IMPORTANCE_POWER &&
+           settings.estimator == ATLAS_ESTIMATOR_AREA;
 }
 
 std::vector<gl::MemoryItem> AtlasSenderSamplingPass::importanceMemoryFor(
@@ -40,12 +48,13 @@ bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& erro
     if (!mPool) return false;
     mViewSamples = build("atlas/sender_sampling_view_samples", "STEP_VIEW_SAMPLES");
     if (!mViewSamples) return false;
+    mSurfaceSamples = build("atlas/sender_sampling_surface_samples", "STEP_SURFACE_SAMPLES");
+    if (!mSurfaceSamples) return false;
     mImportance = build("atlas/sender_sampling_importance", "STEP_IMPORTANCE");
     if (!mImportance) return false;
-    constexpr std::size_t kCells =
-            std::size_t(ATLAS_VIEW_SAMPLES_PER_SIDE) * ATLAS_VIEW_SAMPLES_PER_SIDE;
-    mViewSampleBuffer = gl::createBuffer(kCells * 2 * sizeof(glm::vec4), nullptr, 0,
-            "atlas/view_samples");
+    constexpr std::size_t kCells = std::max(kViewCells, kSurfaceCells);
+    mReceivers = gl::createBuffer(kCells * 2 * sizeof(glm::vec4), nullptr, 0,
+            "atlas/importance_receivers");
     reserveImportance(0);
     return true;
 }
@@ -116,15 +125,27 @@ void AtlasSenderSamplingPass::takeViewSamples(const gl::Texture& viewIndirect,
     gl::GpuScope scope(profiler, "atlas/view_samples");
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_FRAME, frameUniforms.id());
     glBindTextureUnit(BIND_TEX_INDIRECT, viewIndirect.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_VIEW_SAMPLES,
-            mViewSampleBuffer.id());
-    glUseProgram(mViewSamples.id());
-    glDispatchCompute(
-            groupsFor(std::size_t(ATLAS_VIEW_SAMPLES_PER_SIDE) * ATLAS_VIEW_SAMPLES_PER_SIDE),
-            1, 1);
-    // Consumer: the importance step reads the samples.
+    writeReceivers(mViewSamples, kViewCells);
+}
+
+void AtlasSenderSamplingPass::takeSurfaceSamples(const AtlasTextures& textures,
+        const gl::Buffer& atlasUniforms, gl::GpuProfiler& profiler) {
+    gl::GpuScope scope(profiler, "atlas/surface_samples");
+    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, atlasUniforms.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, textures.direct.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, textures.normal.id());
+    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, textures.position.id());
+    writeReceivers(mSurfaceSamples, kSurfaceCells);
+}
+
+void AtlasSenderSamplingPass::writeReceivers(const gl::ProgramRef& program, std::size_t cells) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_RECEIVERS, mReceivers.id());
+    glUseProgram(program.id());
+    glDispatchCompute(groupsFor(cells), 1, 1);
+    // Consumer: the importance step reads the receivers.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(0);
+    mReceiverCells = int(cells);
 }
 
 void AtlasSenderSamplingPass::computeImportance(const AtlasTextures& textures,
@@ -137,8 +158,7 @@ void AtlasSenderSamplingPass::computeImportance(const AtlasTextures& textures,
     glBindTextureUnit(BIND_TEX_ATLAS_DIRECT_BACK, textures.directBack.id());
     glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, textures.normal.id());
     glBindTextureUnit(BIND_TEX_ATLAS_POSITION, textures.position.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_VIEW_SAMPLES,
-            mViewSampleBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_RECEIVERS, mReceivers.id());
     glBindImageTexture(BIND_IMG_ATLAS_IMPORTANCE, mImportanceLayer.id(), 0, GL_FALSE, 0,
             GL_WRITE_ONLY, GL_RG32F);
     glUseProgram(mImportance.id());
@@ -148,11 +168,10 @@ void AtlasSenderSamplingPass::computeImportance(const AtlasTextures& textures,
     glUseProgram(0);
 }
 
-std::vector<glm::vec4> AtlasSenderSamplingPass::readViewSamples() const {
-    std::vector<glm::vec4> samples(
-            std::size_t(2) * ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE);
-    glGetNamedBufferSubData(mViewSampleBuffer.id(), 0,
-            GLsizeiptr(samples.size() * sizeof(glm::vec4)), samples.data());
+std::vector<glm::vec4> AtlasSenderSamplingPass::readReceivers() const {
+    std::vector<glm::vec4> samples(std::size_t(2) * std::size_t(mReceiverCells));
+    glGetNamedBufferSubData(mReceivers.id(), 0, GLsizeiptr(samples.size() * sizeof(glm::vec4)),
+            samples.data());
     return samples;
 }
 

@@ -14,17 +14,22 @@
 //    a hash of the receiver and the stratum: every receiver's set is stratified, and
 //    neighbouring receivers see different senders, so an unlucky set of points becomes noise
 //    between texels instead of one error shared by the whole image.
-// With atlas.importance each texel's power is also weighed by how much of its light the camera's
-// view can receive (sender_weight.glsl, the analogue of the VPLs' draw, results-vpl.md): the
-// senders the view's surfaces can see are drawn more often and carry less each, so the
-// estimate stays unbiased and the view's noise falls where most of the power goes elsewhere
-// (a sunlit ground outside a room).
-//  - view samples (takeViewSamples, from a resolve's depth): the surfaces at the centres of
-//    ATLAS_VIEW_SAMPLES_PER_SIDE^2 cells of the camera's image, from the resolve's view depth.
+// With atlas.importance each texel's power is also weighed by how much of its light a set of
+// receivers can receive (sender_weight.glsl, the analogue of the VPLs' draw, results-vpl.md):
+// the senders those receivers can see are drawn more often and carry less each, so the
+// estimate stays unbiased and the noise falls where most of the power goes elsewhere (a sunlit
+// ground outside a room, whose light leaves for the sky).
+//  - receivers, either the surfaces the camera sees (atlas.importance=view: takeViewSamples,
+//    at the centres of ATLAS_VIEW_SAMPLES_PER_SIDE^2 cells of the image, from a resolve's view
+//    depth) or the scene's own surfaces (atlas.importance=surfaces: takeSurfaceSamples, the
+//    texels at the centres of ATLAS_SURFACE_SAMPLES_PER_SIDE^2 cells of the atlas, each
+//    weighed by the area its texel stands for; no view, so the lit atlas stays the same from
+//    every view, noise included).
 //  - importance (computeImportance): per texel and side, the gather's kernel without
-//    visibility summed over those surfaces, into an RG32F layer of the atlas' size.
+//    visibility summed over the receivers, into an RG32F layer of the atlas' size.
 // Inputs : AtlasTextures direct (rgb = L, a > 0: written) and position (w = a(y), m^2);
-//          AtlasUniforms (R, N, sampling.x = the set's rotation, importance.x = its share).
+//          AtlasUniforms (R, N, sampling.x = the set's rotation, importance: the floor's share,
+//          the receivers' cells and the kernel's smallest r^2).
 // Outputs: the buffers at BIND_SSBO_ATLAS_SENDER_ROWS / _BLOCKS / _POOL (shared.h), owned by
 //          the pass (sized by R and N) and bound by bind() for the gather, with the importance
 //          layer at BIND_TEX_ATLAS_IMPORTANCE.
@@ -52,8 +57,8 @@ public:
         int bounce = 0;                    // whose senders: textures.senderRadiance(bounce)
     };
 
-    // Whether `settings` draw the senders by the view's importance (atlas.importance with the
-    // area estimator, the only one that draws senders).
+    // Whether `settings` draw the senders by an importance (atlas.importance other than power,
+    // with the area estimator, the only one that draws senders).
     [[nodiscard]] static bool drawsByImportance(const AtlasSettings& settings);
     // The importance layer's memory for an atlas of `resolution` texels a side: one item when
     // `settings` draw by importance, none otherwise.
@@ -70,24 +75,32 @@ public:
     // Allocates the importance layer for an atlas of `resolution` texels a side, or with 0
     // releases it for a 1 x 1 layer of zeros (senders drawn by power alone).
     void reserveImportance(int resolution);
-    // The surfaces the camera sees, from the view depth in `viewIndirect`'s alpha (the
-    // resolve's output, drawn with `frameUniforms`); computeImportance weighs texels by them.
+    // The receivers computeImportance weighs texels by: the surfaces the camera sees, from the
+    // view depth in `viewIndirect`'s alpha (the resolve's output, drawn with `frameUniforms`).
     void takeViewSamples(const gl::Texture& viewIndirect, const gl::Buffer& frameUniforms,
             gl::GpuProfiler& profiler);
-    // The importance of each texel that sends light, for the last view samples taken (the
+    // Or the atlas' own surfaces, from its G-buffer (`atlasUniforms`: R).
+    void takeSurfaceSamples(const AtlasTextures& textures, const gl::Buffer& atlasUniforms,
+            gl::GpuProfiler& profiler);
+    // The importance of each texel that sends light, for the last receivers taken (the
     // power is weighed in when the table is built). Again whenever the direct light changes
     // which texels send; the table must be rebuilt after it.
     void computeImportance(const AtlasTextures& textures, const gl::Buffer& atlasUniforms,
             gl::GpuProfiler& profiler);
-    // The view samples last taken, two per cell (position with w = 1 where a surface is,
-    // normal), read back (waits for the GPU): for tests.
-    [[nodiscard]] std::vector<glm::vec4> readViewSamples() const;
+    // The receivers last taken, two per cell (position with w = its weight, 0 where no surface
+    // is; normal with w = 1 where both sides receive), read back (waits for the GPU): for tests.
+    [[nodiscard]] std::vector<glm::vec4> readReceivers() const;
+    // Cells of the receivers last taken (0 before any).
+    [[nodiscard]] int receiverCells() const { return mReceiverCells; }
 
 private:
-    gl::ProgramRef mRows, mPrefix, mPool, mViewSamples, mImportance;
-    gl::Buffer mRowPower, mBlockPower, mPoints, mViewSampleBuffer;
+    // Runs `program`, one of the receiver steps, over `cells` cells into mReceivers.
+    void writeReceivers(const gl::ProgramRef& program, std::size_t cells);
+
+    gl::ProgramRef mRows, mPrefix, mPool, mViewSamples, mSurfaceSamples, mImportance;
+    gl::Buffer mRowPower, mBlockPower, mPoints, mReceivers;
     gl::Texture mImportanceLayer;   // RG32F, R x R once computed; 1 x 1 zero before
-    int mResolution = 0, mSamples = 0, mImportanceResolution = 0;
+    int mResolution = 0, mSamples = 0, mImportanceResolution = 0, mReceiverCells = 0;
 };
 
 } // namespace gi::atlas
