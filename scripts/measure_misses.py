@@ -18,7 +18,10 @@ On the open-front Cornell box:
   front of the blocks).
 
 Usage: /usr/bin/python3 scripts/measure_misses.py [--bin build/voxatlas] [--parts voxel,atlas,vpl]
-Prints markdown tables; about 7 minutes on llvmpipe.
+       [--set key=value ...]
+--set changes the settings of every GPU render (after the table's own: --set
+atlas.visibility=bvh splits the converged atlas' error with rays, --set atlas.importance=power
+with the draw by power alone). Prints markdown tables; about 7 minutes on llvmpipe.
 """
 import argparse
 import os
@@ -36,8 +39,12 @@ BASE = {"material.specular": 0, "render.plan": "adaptive"}
 ATLAS_SAMPLES_PER_FRAME = 100   # atlas.samples' default: frames = target / this, rounded up
 
 
+OVERRIDES = {}   # --set: over every GPU render's settings
+
+
 def render(mode, settings, scene=SCENE):
-    return common.render_indirect(scene, mode, {**BASE, **settings}, SIZE).image
+    overrides = OVERRIDES if mode != "reference" else {}
+    return common.render_indirect(scene, mode, {**BASE, **settings, **overrides}, SIZE).image
 
 
 def lowest_quarter(shape):
@@ -102,7 +109,7 @@ def vpl_table(reference, mask):
     clamp_1024 = None
     for label, settings in rows:
         common.progress(f"vpl, {label}")
-        rendered = common.render_indirect(SCENE, "vpl", {**BASE, **settings}, SIZE)
+        rendered = common.render_indirect(SCENE, "vpl", {**BASE, **settings, **OVERRIDES}, SIZE)
         if not settings:
             clamp_1024 = clamp_area(rendered.log)
         print("| {} | {:.3f} | {:.3f} | {:.2f} | {:.3f} |".format(
@@ -126,8 +133,15 @@ def main():
     parser = argparse.ArgumentParser()
     common.add_bin_argument(parser)
     parser.add_argument("--parts", default="voxel,atlas,vpl", help="which tables (comma-separated)")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="a setting for every GPU render, after the table's own")
     args = parser.parse_args()
     common.use_binary(args.bin)
+    for item in args.set:
+        if "=" not in item:
+            parser.error(f"--set {item}: expected key=value")
+        key, value = item.split("=", 1)
+        OVERRIDES[key] = value
     parts = args.parts.split(",")
     if "voxel" in parts:
         voxel_bands()

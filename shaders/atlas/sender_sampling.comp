@@ -9,8 +9,8 @@
 //                depth the resolve pass wrote, and its normal from the neighbouring pixels'.
 //   STEP_SURFACE_SAMPLES one invocation per cell of an ATLAS_SURFACE_SAMPLES_PER_SIDE^2 grid
 //                over the atlas: the texel at the cell's centre where the G-buffer wrote one,
-//                weighed by the area it stands for (charts too small for the atlas' texel get
-//                finer texels), with its normal, both sides receiving if double-sided.
+//                weighed by the area it stands for (less than a texel's square at a chart's
+//                edge), with its normal, both sides receiving if double-sided.
 //   STEP_IMPORTANCE one invocation per atlas texel: for each side, the gather's kernel without
 //                visibility, cos at the texel x cos at the receiver / max(B, r^2), summed over
 //                the receivers (the VPLs' importance, results-vpl.md).

@@ -2,8 +2,8 @@
 // reflected power reaches no surface (the open-front box's sunlit ground outside, whose light
 // leaves for the sky), the draw by power alone spends most samples there; the importance draws
 // put them where receivers can see them, carrying less each, so the estimate stays unbiased.
-// By the scene's own surfaces (the default) the receivers are a grid of atlas texels and the
-// lit atlas does not depend on the view (AtlasGpuTest.IndirectLightDoesNotDependOnTheView); by
+// By the scene's own surfaces the receivers are a grid of atlas texels and the lit atlas does
+// not depend on the view (AtlasGpuTest.IndirectLightDoesNotDependOnTheView); by
 // the view they are the surfaces the camera sees, read from the resolve pass' view depth at
 // the first gather and again when the camera moves far enough or the scene changes.
 #include "AtlasGpuTestSupport.h"
@@ -107,8 +107,8 @@ TEST_F(AtlasGpuTest, TheViewSamplesLieOnTheSurfacesTheCameraSees) {
 
 // The surfaces' receivers are atlas texels at the centres of a grid over the atlas: each lies
 // on the floor (facing up) or the lamp's square (facing down), weighed by the area its texel
-// stands for, so that the cells of each surface add up to its area whatever density its chart
-// got in the atlas (the lamp's small chart gets finer texels); no view is read.
+// stands for (less than a texel's square at a chart's edge), so that each surface's cells add
+// up to its area; no view is read.
 TEST_F(AtlasGpuTest, TheSurfaceSamplesLieOnTheScenesSurfacesWeighedByTheirArea) {
     if (!mContext) GTEST_SKIP();
     constexpr float kLampHeight = 0.6f, kLampHalf = 0.15f, kFloorSide = 2.0f;
