@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """VPL or converged atlas GI on the open-front box (assets/scene_suite/
 cornell_open_front_sun.gltf, camera 0), drawn by power alone and by an importance (VPLs:
-vpl.importance, the view's, the default; the atlas: atlas.importance=view and =surfaces, where
-power is the default), against the path tracer: prints relative RMSE and energy of the indirect light and
+vpl.importance, the view's, the default; the atlas: atlas.importance=view and =surfaces, the
+default), against the path tracer: prints relative RMSE and energy of the indirect light and
 draws the picture (the path tracer, each draw; below, each one's signed error: red too bright,
 blue too dark, in units of the path tracer's mean).
   --mode vpl    docs/images/vpl/importance_open_front.png (docs/results-vpl.md, 'VPLs drawn

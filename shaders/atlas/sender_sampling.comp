@@ -7,10 +7,9 @@
 //   STEP_VIEW_SAMPLES one invocation per cell of an ATLAS_VIEW_SAMPLES_PER_SIDE^2 grid over the
 //                the camera's image: the surface at the cell's centre, rebuilt from the view
 //                depth the resolve pass wrote, and its normal from the neighbouring pixels'.
-//   STEP_SURFACE_SAMPLES one invocation per cell of an ATLAS_SURFACE_SAMPLES_PER_SIDE^2 grid
-//                over the atlas: the texel at the cell's centre where the G-buffer wrote one,
-//                weighed by the area it stands for (less than a texel's square at a chart's
-//                edge), with its normal, both sides receiving if double-sided.
+//   STEP_SURFACE_SAMPLES one invocation per point on the scene's triangles (SurfacePoints.h,
+//                spread by area): its place and normal from GpuScene's posed vertices, weighed
+//                by the area it stands for, both sides receiving if double-sided.
 //   STEP_IMPORTANCE one invocation per atlas texel: for each side, the gather's kernel without
 //                visibility, cos at the texel x cos at the receiver / max(B, r^2), summed over
 //                the receivers (the VPLs' importance, results-vpl.md).
@@ -130,18 +129,35 @@ void main() {
 
 #elif defined(STEP_SURFACE_SAMPLES)
 
+layout(std430, binding = BIND_SSBO_SCENE_VERTICES) readonly buffer SceneVertices {
+    float sceneVertex[];
+};
+layout(std430, binding = BIND_SSBO_ATLAS_SURFACE_POINTS) readonly buffer SurfacePoints {
+    uint surfacePoint[];
+};
+
+// Position (xyz) or normal (with offset 3) of GpuScene vertex v: both lead its layout.
+vec3 sceneVector(uint v, uint offset) {
+    uint base = v * uint(SCENE_VERTEX_FLOATS) + offset;
+    return vec3(sceneVertex[base], sceneVertex[base + 1u], sceneVertex[base + 2u]);
+}
+
 void main() {
-    int cell = int(gl_GlobalInvocationID.x);
-    const int perSide = ATLAS_SURFACE_SAMPLES_PER_SIDE;
-    if (cell >= perSide * perSide) return;
-    int resolution = atlas.size.x;
-    ivec2 texel = min(ivec2((vec2(cell % perSide, cell / perSide) + 0.5) * float(resolution) /
-                            float(perSide)), ivec2(resolution - 1));
-    vec4 position = texelFetch(atlasPosition, texel, 0);
-    bool found = texelFetch(atlasDirect, texel, 0).a > 0.0 && position.w > 0.0;
-    vec4 normal = texelFetch(atlasNormal, texel, 0);
-    receivers[2 * cell] = vec4(position.xyz, found ? position.w : 0.0);
-    receivers[2 * cell + 1] = vec4(normal.xyz, normal.w > 0.5 ? 1.0 : 0.0);
+    uint cell = gl_GlobalInvocationID.x;
+    if (cell >= uint(atlas.importance.y)) return;
+    uint base = cell * uint(SURFACE_POINT_UINTS);
+    uvec3 v = uvec3(surfacePoint[base], surfacePoint[base + 1u], surfacePoint[base + 2u]);
+    vec3 b = vec3(0.0, uintBitsToFloat(surfacePoint[base + 4u]),
+                  uintBitsToFloat(surfacePoint[base + 5u]));
+    b.x = 1.0 - b.y - b.z;
+    vec3 position = b.x * sceneVector(v.x, 0u) + b.y * sceneVector(v.y, 0u) +
+                    b.z * sceneVector(v.z, 0u);
+    vec3 normal = b.x * sceneVector(v.x, 3u) + b.y * sceneVector(v.y, 3u) +
+                  b.z * sceneVector(v.z, 3u);
+    bool found = dot(normal, normal) > 0.0;
+    receivers[2u * cell] = vec4(position, found ? atlas.importance.w : 0.0);
+    receivers[2u * cell + 1u] = vec4(found ? normalize(normal) : vec3(0.0),
+                                    surfacePoint[base + 3u] != 0u ? 1.0 : 0.0);
 }
 
 #elif defined(STEP_IMPORTANCE)

@@ -51,12 +51,15 @@
 #define BIND_SSBO_SVO_LEAF_BITS     20  // build only: uint[] one bit per leaf voxel, x fastest
 #define BIND_SSBO_SVO_BUILD         21  // build only: SvoBuildState
 #define BIND_SSBO_ATLAS_RECEIVERS   22  // vec4[2 x cells]: the receivers atlas.importance weighs
-                                        // the senders by, per cell of a grid: position (w = its
-                                        // weight: 1 for the view's, the area in m^2 its texel
-                                        // stands for for the atlas'; 0 where none is) and
-                                        // normal (w = 1 when both sides
-                                        // receive); the surfaces the camera sees (view) or the
-                                        // atlas' own surfaces (surfaces)
+                                        // the senders by: position (w = its weight: 1 for the
+                                        // view's, the area in m^2 it stands for for the
+                                        // surfaces'; 0 where none is) and normal (w = 1 when
+                                        // both sides receive); the surfaces the camera sees in
+                                        // a grid of cells (view) or points on the scene's
+                                        // triangles (surfaces)
+#define BIND_SSBO_ATLAS_SURFACE_POINTS 23 // uint[SURFACE_POINT_UINTS x points]: the surfaces'
+                                        // receivers as triangles and barycentric weights
+                                        // (atlas::SurfacePoint)
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -200,8 +203,9 @@
 #define ATLAS_SENDER_LOCAL_SIZE     64  // work-group size of atlas/sender_sampling
 #define ATLAS_VIEW_SAMPLES_PER_SIDE 16  // cells per side of the image whose surfaces weigh the
                                         // senders' draw (atlas.importance=view)
-#define ATLAS_SURFACE_SAMPLES_PER_SIDE 32 // cells per side of the atlas whose texels weigh the
-                                        // senders' draw (atlas.importance=surfaces)
+#define ATLAS_SURFACE_POINTS        1024 // points on the scene's triangles whose kernel weighs
+                                        // the senders' draw (atlas.importance=surfaces)
+#define SURFACE_POINT_UINTS         6   // uints per atlas::SurfacePoint
 #define ATLAS_POSE_LOCAL_SIZE       64  // work-group size of atlas/follow_pose
 #define SCENE_VERTEX_FLOATS         14  // floats per GpuScene vertex (scene::SceneVertex)
 #define ATLAS_VERTEX_FLOATS         18  // floats per atlas vertex (atlas::GpuAtlasVertex)

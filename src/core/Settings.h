@@ -138,7 +138,7 @@ struct AtlasSettings {
     int gutter = 2;               // atlas.gutter: empty texels between charts
     bool filter = true;           // atlas.filter: each texel's E_ind averaged over the 3x3
                                   // texels of its own surface (shaders/atlas/dilate.frag)
-    int importance = 0;           // atlas.importance: ATLAS_IMPORTANCE_* (0 power, 1 view,
+    int importance = 2;           // atlas.importance: ATLAS_IMPORTANCE_* (0 power, 1 view,
                                   // 2 surfaces): the area estimator draws senders by power, or by
                                   // power x what the camera's view can receive of it (the atlas'
                                   // light then depends on the view in its noise), or x what the

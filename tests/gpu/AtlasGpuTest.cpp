@@ -114,11 +114,11 @@ TEST_F(AtlasGpuTest, TexelsRoundTripToWorldPositions) {
 
 // The thesis' goal (3.1, 5.1): the atlas holds the whole scene, so the indirect light of a
 // surface point is the same whether or not the red wall is in view. The lit atlas is computed
-// without the camera: bit-identical between the two views, with the senders drawn by power
-// and by what the scene's surfaces receive (atlas.importance=surfaces). The pixel showing
-// one floor point 12 cm from the red wall agrees between the classic view and a view straight
-// down on it that does not show the wall, and the point stays redder than the mirror point by
-// the green wall.
+// without the camera: bit-identical between the two views, with the senders drawn by what the
+// scene's surfaces receive (atlas.importance=surfaces, the default) and by power. The pixel
+// showing one floor point 12 cm from the red wall agrees between the classic view and a view
+// straight down on it that does not show the wall, and the point stays redder than the mirror
+// point by the green wall.
 TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     const scene::Scene scene = loadCornellBox();
     const glm::vec3 nearRed(0.12f, 0.0f, -0.03f), nearGreen(0.556f - 0.12f, 0.0f, -0.03f);
@@ -130,15 +130,15 @@ TEST_F(AtlasGpuTest, IndirectLightDoesNotDependOnTheView) {
     b.render(size, render::OutputComponent::Indirect, 1, withoutWall);
     EXPECT_TRUE(a.lit() == b.lit()) << "the lit atlas depends on the camera";
     {
-        // The senders drawn by what the scene's surfaces receive: no view either.
-        Settings surfaces = atlasSettings(256, 1024);
-        surfaces.atlas.importance = ATLAS_IMPORTANCE_SURFACES;
-        AtlasFrame c(scene, surfaces), d(scene, surfaces);
+        // The senders drawn by power alone: no view either.
+        Settings power = atlasSettings(256, 1024);
+        power.atlas.importance = ATLAS_IMPORTANCE_POWER;
+        AtlasFrame c(scene, power), d(scene, power);
         c.render(size, render::OutputComponent::Indirect);
         d.render(size, render::OutputComponent::Indirect, 1, withoutWall);
         EXPECT_TRUE(c.lit() == d.lit())
-                << "atlas.importance=surfaces: the lit atlas depends on the camera";
-        EXPECT_FALSE(c.lit() == a.lit()) << "atlas.importance=surfaces draws as power does";
+                << "atlas.importance=power: the lit atlas depends on the camera";
+        EXPECT_FALSE(c.lit() == a.lit()) << "the draws by power and by the surfaces agree";
     }
 
     auto pixelOf = [&](const scene::Camera& camera, const glm::vec3& point, glm::ivec2& pixel) {

@@ -104,6 +104,8 @@ bool AtlasGi::buildAtlasGeometry(std::string& error) {
                     : (" (not cached: " + mBuildInfo.cacheError + ")").c_str());
     mGeometry.upload(mMesh, mAtlas, mFollowsPose);
     mPosedGeometry = ~std::uint64_t(0);
+    mSurfacePoints = surfacePoints(mMesh, ATLAS_SURFACE_POINTS);
+    mSenderSampling.setSurfacePoints(mSurfacePoints);
     return allocateLayers(error);
 }
 
@@ -188,16 +190,14 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
     const glm::vec3 sky = scene::skyRadiance(in.lights) * in.scene.exposure();
     u.sky = glm::vec4(sky, float(skyDirections(in)));
     // The importance's receivers: the view's cells, whose kernel stops growing where the
-    // estimator's does, or the atlas' cells, each standing for the surface of its cell, within
-    // which the kernel stops growing (else the texels nearest a cell's centre would draw most
-    // of the samples).
+    // estimator's does, or the points on the scene's surfaces, each standing for its share of
+    // the surface, within which the kernel stops growing (else the texels nearest a point
+    // would draw most of the samples).
     const bool bySurfaces = mSettings.importance == ATLAS_IMPORTANCE_SURFACES;
-    const int cells = bySurfaces
-            ? ATLAS_SURFACE_SAMPLES_PER_SIDE * ATLAS_SURFACE_SAMPLES_PER_SIDE
-            : ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE;
-    const double cellEdge = double(mSettings.resolution) / ATLAS_SURFACE_SAMPLES_PER_SIDE *
-                            double(mAtlas.texelSize);
-    const float importanceClamp = bySurfaces ? float(cellEdge * cellEdge) : estimatorConstant;
+    const int cells = bySurfaces ? int(mSurfacePoints.points.size())
+                                 : ATLAS_VIEW_SAMPLES_PER_SIDE * ATLAS_VIEW_SAMPLES_PER_SIDE;
+    const float importanceClamp =
+            bySurfaces ? float(mSurfacePoints.areaPerPoint) : estimatorConstant;
     u.importance = glm::vec4(drawsByImportance() && mImportanceReady ? kImportanceFloorShare : 0.0f,
             float(cells), mBounces > 1 ? 1.0f : 0.0f, importanceClamp);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
@@ -315,7 +315,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
         ++mViewSampleTakes;
     }
     if (sampleSurfaces) {
-        mSenderSampling.takeSurfaceSamples(mTextures, mUniforms, profiler);
+        mSenderSampling.takeSurfaceSamples(in.scene.vertexBuffer(), mUniforms, profiler);
         mSenderSampling.computeImportance(mTextures, mUniforms, profiler);
         ++mSurfaceSampleTakes;
     }

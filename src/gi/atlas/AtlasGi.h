@@ -124,6 +124,7 @@ private:
     bool mImportanceReady = false;
     int mViewSampleTakes = 0;
     int mSurfaceSampleTakes = 0;
+    SurfacePoints mSurfacePoints;      // atlas.importance=surfaces: its receivers on the mesh
 
     // Animated instances: the atlas vertices follow GpuScene's pose (AtlasPosePass).
     bool mFollowsPose = false;

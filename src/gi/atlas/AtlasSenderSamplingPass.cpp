@@ -15,8 +15,8 @@ GLuint groupsFor(std::size_t invocations) {
 
 constexpr std::size_t kViewCells =
         std::size_t(ATLAS_VIEW_SAMPLES_PER_SIDE) * ATLAS_VIEW_SAMPLES_PER_SIDE;
-constexpr std::size_t kSurfaceCells =
-        std::size_t(ATLAS_SURFACE_SAMPLES_PER_SIDE) * ATLAS_SURFACE_SAMPLES_PER_SIDE;
+constexpr std::size_t kSurfaceCells = ATLAS_SURFACE_POINTS;
+static_assert(sizeof(SurfacePoint) == SURFACE_POINT_UINTS * sizeof(std::uint32_t));
 
 std::size_t blocksPerRow(int resolution) {
     return std::size_t((resolution + ATLAS_SENDER_BLOCK - 1) / ATLAS_SENDER_BLOCK);
@@ -32,7 +32,9 @@ bool AtlasSenderSamplingPass::drawsByImportance(const AtlasSettings& settings) {
 std::vector<gl::MemoryItem> AtlasSenderSamplingPass::importanceMemoryFor(
         const AtlasSettings& settings, int resolution) {
     if (!drawsByImportance(settings)) return {};
-    return {{"atlas/importance", gl::textureBytes(GL_RG32F, {resolution, resolution, 1}, 1)}};
+    return {{"atlas/importance", gl::textureBytes(GL_RG32F, {resolution, resolution, 1}, 1)},
+            {"atlas/receivers", std::max(kViewCells, kSurfaceCells) * 2 * sizeof(glm::vec4)},
+            {"atlas/surface_points", kSurfaceCells * sizeof(SurfacePoint)}};
 }
 
 bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& error) {
@@ -54,8 +56,9 @@ bool AtlasSenderSamplingPass::init(gl::ShaderLibrary& shaders, std::string& erro
     if (!mImportance) return false;
     constexpr std::size_t kCells = std::max(kViewCells, kSurfaceCells);
     mReceivers = gl::createBuffer(kCells * 2 * sizeof(glm::vec4), nullptr, 0,
-            "atlas/importance_receivers");
+            "atlas/receivers");
     reserveImportance(0);
+    setSurfacePoints({});
     return true;
 }
 
@@ -128,14 +131,27 @@ void AtlasSenderSamplingPass::takeViewSamples(const gl::Texture& viewIndirect,
     writeReceivers(mViewSamples, kViewCells);
 }
 
-void AtlasSenderSamplingPass::takeSurfaceSamples(const AtlasTextures& textures,
+void AtlasSenderSamplingPass::setSurfacePoints(const SurfacePoints& points) {
+    mSurfacePointCount = int(std::min(points.points.size(), kSurfaceCells));
+    const std::size_t bytes = std::max<std::size_t>(
+            std::size_t(mSurfacePointCount) * sizeof(SurfacePoint), sizeof(SurfacePoint));
+    mSurfacePoints = gl::createBuffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT,
+            "atlas/surface_points");
+    if (mSurfacePointCount > 0) {
+        glNamedBufferSubData(mSurfacePoints.id(), 0,
+                GLsizeiptr(std::size_t(mSurfacePointCount) * sizeof(SurfacePoint)),
+                points.points.data());
+    }
+}
+
+void AtlasSenderSamplingPass::takeSurfaceSamples(const gl::Buffer& sceneVertices,
         const gl::Buffer& atlasUniforms, gl::GpuProfiler& profiler) {
     gl::GpuScope scope(profiler, "atlas/surface_samples");
     glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_ATLAS, atlasUniforms.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_DIRECT, textures.direct.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_NORMAL, textures.normal.id());
-    glBindTextureUnit(BIND_TEX_ATLAS_POSITION, textures.position.id());
-    writeReceivers(mSurfaceSamples, kSurfaceCells);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_SCENE_VERTICES, sceneVertices.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_SURFACE_POINTS,
+            mSurfacePoints.id());
+    writeReceivers(mSurfaceSamples, std::size_t(mSurfacePointCount));
 }
 
 void AtlasSenderSamplingPass::writeReceivers(const gl::ProgramRef& program, std::size_t cells) {

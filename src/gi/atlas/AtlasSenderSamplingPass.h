@@ -21,10 +21,10 @@
 // ground outside a room, whose light leaves for the sky).
 //  - receivers, either the surfaces the camera sees (atlas.importance=view: takeViewSamples,
 //    at the centres of ATLAS_VIEW_SAMPLES_PER_SIDE^2 cells of the image, from a resolve's view
-//    depth) or the scene's own surfaces (atlas.importance=surfaces: takeSurfaceSamples, the
-//    texels at the centres of ATLAS_SURFACE_SAMPLES_PER_SIDE^2 cells of the atlas, each
-//    weighed by the area its texel stands for; no view, so the lit atlas stays the same from
-//    every view, noise included).
+//    depth) or the scene's own surfaces (atlas.importance=surfaces: takeSurfaceSamples,
+//    ATLAS_SURFACE_POINTS points on the scene's triangles spread by area, SurfacePoints.h,
+//    placed from the posed vertices; no view, so the lit atlas stays the same from every
+//    view, noise included).
 //  - importance (computeImportance): per texel and side, the gather's kernel without
 //    visibility summed over the receivers, into an RG32F layer of the atlas' size.
 // Inputs : AtlasTextures direct (rgb = L, a > 0: written) and position (w = a(y), m^2);
@@ -37,6 +37,7 @@
 
 #include "core/Settings.h"
 #include "gi/atlas/AtlasTextures.h"
+#include "gi/atlas/SurfacePoints.h"
 #include "gl/GpuProfiler.h"
 #include "gl/MemoryRegistry.h"
 #include "gl/ShaderLibrary.h"
@@ -60,8 +61,8 @@ public:
     // Whether `settings` draw the senders by an importance (atlas.importance other than power,
     // with the area estimator, the only one that draws senders).
     [[nodiscard]] static bool drawsByImportance(const AtlasSettings& settings);
-    // The importance layer's memory for an atlas of `resolution` texels a side: one item when
-    // `settings` draw by importance, none otherwise.
+    // The importance's memory for an atlas of `resolution` texels a side when `settings` draw
+    // by importance (its layer, the receivers and the surface points), none otherwise.
     [[nodiscard]] static std::vector<gl::MemoryItem> importanceMemoryFor(
             const AtlasSettings& settings, int resolution);
 
@@ -79,8 +80,10 @@ public:
     // view depth in `viewIndirect`'s alpha (the resolve's output, drawn with `frameUniforms`).
     void takeViewSamples(const gl::Texture& viewIndirect, const gl::Buffer& frameUniforms,
             gl::GpuProfiler& profiler);
-    // Or the atlas' own surfaces, from its G-buffer (`atlasUniforms`: R).
-    void takeSurfaceSamples(const AtlasTextures& textures, const gl::Buffer& atlasUniforms,
+    // Or the scene's own surfaces: the points last set, placed from `sceneVertices`
+    // (GpuScene's posed vertices; `atlasUniforms`: the points' count and area).
+    void setSurfacePoints(const SurfacePoints& points);
+    void takeSurfaceSamples(const gl::Buffer& sceneVertices, const gl::Buffer& atlasUniforms,
             gl::GpuProfiler& profiler);
     // The importance of each texel that sends light, for the last receivers taken (the
     // power is weighed in when the table is built). Again whenever the direct light changes
@@ -98,9 +101,10 @@ private:
     void writeReceivers(const gl::ProgramRef& program, std::size_t cells);
 
     gl::ProgramRef mRows, mPrefix, mPool, mViewSamples, mSurfaceSamples, mImportance;
-    gl::Buffer mRowPower, mBlockPower, mPoints, mReceivers;
+    gl::Buffer mRowPower, mBlockPower, mPoints, mReceivers, mSurfacePoints;
     gl::Texture mImportanceLayer;   // RG32F, R x R once computed; 1 x 1 zero before
     int mResolution = 0, mSamples = 0, mImportanceResolution = 0, mReceiverCells = 0;
+    int mSurfacePointCount = 0;
 };
 
 } // namespace gi::atlas
