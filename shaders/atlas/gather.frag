@@ -3,9 +3,10 @@
 // radiance L(y). Two estimators of
 // E_ind(x) = integral of L(y) cos(theta_x) cos(theta_y) / r^2 dA(y):
 //   ATLAS_ESTIMATOR_AREA      the area form, importance-sampled by the power each texel sends
-//                             (with atlas.importance, by that power times what the camera's
-//                             view can receive of it: sender_weight.glsl; below, mean(L) and P
-//                             then stand for the weight per area and its total):
+//                             (by default, atlas.importance=surfaces, by that power times
+//                             what the scene's surfaces, or with =view the camera's view, can
+//                             receive of it: sender_weight.glsl; below, mean(L) and P then
+//                             stand for the weight per area and its total):
 //                             AtlasSenderSamplingPass draws texel y with probability
 //                             p(y) = a(y) mean(L(y)) / P (a(y): the surface area the texel
 //                             stands for, the position layer's w; P: the sum over all texels),

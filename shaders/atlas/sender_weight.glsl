@@ -1,9 +1,10 @@
 // The weight by which the area estimator draws a sender texel, shared by the draw
 // (sender_sampling.comp) and the gather that divides by it (gather.frag).
-// Without atlas.importance it is the power the texel sends, a(y) mean(L(y)) over both sides.
-// With it, each side's power is multiplied by I(y) + share x I_mean: I(y) how much of that
-// side's light the camera's view can receive (the importance step), I_mean its power-weighted
-// mean over the atlas, so every lit texel keeps a share of the draw whatever the view sees.
+// With atlas.importance=power it is the power the texel sends, a(y) mean(L(y)) over both sides.
+// Otherwise each side's power is multiplied by I(y) + share x I_mean: I(y) how much of that
+// side's light the receivers can receive (the importance step: the surfaces the camera sees,
+// or points on the scene's triangles), I_mean its power-weighted mean over the atlas, so every
+// lit texel keeps a share of the draw whatever the receivers see.
 // The draw's tables hold two prefix sums, sum a mean(L) I (x) and sum a mean(L) (y), so the
 // floor is added once the totals are known: weight = x + share x (X / Y) x y.
 #ifndef GI_ATLAS_SENDER_WEIGHT_GLSL
@@ -15,7 +16,7 @@ layout(binding = BIND_TEX_ATLAS_IMPORTANCE) uniform sampler2D atlasImportance;
 
 bool drawsByImportance() { return atlas.importance.x > 0.0; }
 
-// The view's importance of the texel's front (x) and back (y) side; 1 without it.
+// The importance of the texel's front (x) and back (y) side; 1 without one.
 vec2 senderImportance(ivec2 t) {
     return drawsByImportance() ? texelFetch(atlasImportance, t, 0).rg : vec2(1.0);
 }

@@ -53,7 +53,7 @@ public:
     const AtlasBuildInfo& buildInfo() const { return mBuildInfo; }
     const AtlasTextures& textures() const { return mTextures; }
     const AtlasSenderSamplingPass& senderSampling() const { return mSenderSampling; }
-    // atlas.importance: how many times the view's surfaces (view) or the atlas' (surfaces)
+    // atlas.importance: how many times the view's surfaces (view) or the scene's (surfaces)
     // were sampled since configure.
     int viewSampleTakes() const { return mViewSampleTakes; }
     int surfaceSampleTakes() const { return mSurfaceSampleTakes; }

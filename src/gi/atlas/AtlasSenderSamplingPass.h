@@ -14,8 +14,8 @@
 //    a hash of the receiver and the stratum: every receiver's set is stratified, and
 //    neighbouring receivers see different senders, so an unlucky set of points becomes noise
 //    between texels instead of one error shared by the whole image.
-// With atlas.importance each texel's power is also weighed by how much of its light a set of
-// receivers can receive (sender_weight.glsl, the analogue of the VPLs' draw, results-vpl.md):
+// With atlas.importance (by default =surfaces) each texel's power is also weighed by how much of
+// its light a set of receivers can receive (sender_weight.glsl, the analogue of the VPLs' draw, results-vpl.md):
 // the senders those receivers can see are drawn more often and carry less each, so the
 // estimate stays unbiased and the noise falls where most of the power goes elsewhere (a sunlit
 // ground outside a room, whose light leaves for the sky).
