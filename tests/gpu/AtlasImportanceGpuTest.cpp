@@ -145,6 +145,19 @@ TEST_F(AtlasGpuTest, TheSurfacePointsLieOnTheScenesSurfacesSpreadByArea) {
     EXPECT_NEAR(lampArea, kLampSide * kLampSide, share + 1e-3);
 }
 
+// The surfaces' importance depends on the geometry and the lights only: without progression
+// the G-buffer is drawn every frame (the thesis' frame from scratch), the importance is not.
+TEST_F(AtlasGpuTest, TheSurfacesImportanceIsTakenOnceForAStillSceneWithoutProgression) {
+    if (!mContext) GTEST_SKIP();
+    const scene::Scene scene = loadCornellBox();
+    Settings settings = atlasSettings();
+    settings.atlas.importance = ATLAS_IMPORTANCE_SURFACES;
+    settings.atlas.progressive = false;
+    AtlasFrame frame(scene, settings);
+    frame.render({32, 32}, render::OutputComponent::Indirect, 3);
+    EXPECT_EQ(frame.gi().surfaceSampleTakes(), 1);
+}
+
 // A 2 cm step keeps the view's samples (the importance only says where to draw, so a draw
 // for a nearby view stays unbiased); a step of more than 5 % of the scene's diagonal takes
 // them again; the draws by power and by the surfaces never take the view, and the surfaces

@@ -283,7 +283,8 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
     // for the first gather, when the geometry or the lights changed (the G-buffer is drawn
     // again), and when the camera has moved far enough (scene::viewMovedFarFrom) since. So a
     // renderer that saw the scene move draws the same senders as one that sees it only as it is
-    // now. By the surfaces it follows the G-buffer alone: where its texels lie and which send.
+    // now. By the surfaces it follows the geometry and the lights alone (where the texels lie
+    // and which send), not every G-buffer: without atlas.progressive one is drawn every frame.
     const bool byView = drawsByImportance() && mSettings.importance == ATLAS_IMPORTANCE_VIEW;
     const bool bySurfaces =
             drawsByImportance() && mSettings.importance == ATLAS_IMPORTANCE_SURFACES;
@@ -292,7 +293,7 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                     scene::viewMovedFarFrom(*mViewSampledFrom, in.camera,
                             glm::length(in.scene.bounds().size())));
     const bool sampleSurfaces = bySurfaces && plan.gather &&
-                                (plan.drawGBuffer || !mImportanceReady);
+                                (plan.inputsChanged || !mImportanceReady);
     if (sampleView || sampleSurfaces) mImportanceReady = true;   // computed below, before the draws
     writeUniforms(plan, in);
     // Progressive sums gather until they reach atlas.target_samples; without progression
