@@ -10,9 +10,10 @@
 //   STEP_SURFACE_SAMPLES one invocation per point on the scene's triangles (SurfacePoints.h,
 //                spread by area): its place and normal from GpuScene's posed vertices, weighed
 //                by the area it stands for, both sides receiving if double-sided.
-//   STEP_IMPORTANCE one invocation per atlas texel: for each side, the gather's kernel without
-//                visibility, cos at the texel x cos at the receiver / max(B, r^2), summed over
-//                the receivers (the VPLs' importance, results-vpl.md).
+//   STEP_IMPORTANCE one invocation per atlas texel (x: the column, y: the row, so that a 4096^2
+//                atlas stays within the 65535 work groups a dimension): for each side, the
+//                gather's kernel without visibility, cos at the texel x cos at the receiver /
+//                max(B, r^2), summed over the receivers (the VPLs' importance, results-vpl.md).
 //   STEP_ROWS    one invocation per atlas row: prefix sums of the weights at the end of every
 //                ATLAS_SENDER_BLOCK texels, and the row's sum (two sums, sender_weight.glsl).
 //   STEP_PREFIX  one invocation: the row sums turned into prefix sums over rows.
@@ -166,9 +167,8 @@ layout(binding = BIND_IMG_ATLAS_IMPORTANCE, rg32f) uniform writeonly image2D imp
 
 void main() {
     int resolution = atlas.size.x;
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= uint(resolution) * uint(resolution)) return;
-    ivec2 t = ivec2(int(i % uint(resolution)), int(i / uint(resolution)));
+    ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+    if (t.x >= resolution || t.y >= resolution) return;
     vec2 importance = vec2(0.0);
     vec4 position = texelFetch(atlasPosition, t, 0);
     vec4 direct = texelFetch(atlasDirect, t, 0);

@@ -178,7 +178,8 @@ void AtlasSenderSamplingPass::computeImportance(const AtlasTextures& textures,
     glBindImageTexture(BIND_IMG_ATLAS_IMPORTANCE, mImportanceLayer.id(), 0, GL_FALSE, 0,
             GL_WRITE_ONLY, GL_RG32F);
     glUseProgram(mImportance.id());
-    glDispatchCompute(groupsFor(std::size_t(r) * std::size_t(r)), 1, 1);
+    // A row of texels per y: r^2 / 64 groups in x alone exceed GL's 65535 at r = 4096.
+    glDispatchCompute(groupsFor(std::size_t(r)), GLuint(r), 1);
     // Consumers: the table's rows and the gather fetch the layer.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
