@@ -18,7 +18,10 @@
 //                             clamped at (2 texel edges)^2 (sampling.z): texels next to the
 //                             receiver are not points, and their 1/r^2 spikes would dominate
 //                             the error (Cornell box at 2048 samples: relative RMSE 0.52 with
-//                             a one-texel clamp, 0.32 with two, for 0.2% less energy).
+//                             a one-texel clamp, 0.32 with two, for 0.2% less energy). With
+//                             atlas.near_rays senders within the near field's reach
+//                             (nearField.y, three times the clamp's radius) are skipped here:
+//                             rays count them, with the whole kernel (near_field.glsl).
 //   ATLAS_ESTIMATOR_MERZ2010  sum L(y) cos(theta_x) * 2 pi / N over the Hammersley points of
 //                             the atlas (rotated by the set's offset, the same for every
 //                             receiver; points on empty texels count as zero): the thesis'
@@ -37,17 +40,18 @@
 // blending.
 #include "atlas_common.glsl"
 #include "sender_weight.glsl"
+#include "near_field.glsl"
 #include "../common/constants.glsl"
+#include "../common/cosine_direction.glsl"
 #include "../common/hash.glsl"
 #ifdef VISIBILITY_VOXEL
 #include "../common/voxel_visibility.glsl"
 #endif
-#ifdef VISIBILITY_BVH
-#include "../common/bvh.glsl"
 
 // The edge of the patch of area a that a texel stands for.
 float texelEdge(float a) { return sqrt(max(a, 0.0)); }
 
+#ifdef VISIBILITY_BVH
 // 1 where nothing lies between the two texels, each seen from the side given. Each end starts
 // half a texel edge off its surface, and the ray ignores what lies within one texel edge of
 // either end: a texel's centre can lie up to half a texel past its triangle's edge (the
@@ -91,14 +95,9 @@ layout(location = LOC_ATLAS_GATHER_RANGE) uniform ivec4 gatherRange;
 vec3 skyIrradiance(vec3 x, vec3 n, float area, uint seed) {
     int directions = int(atlas.sky.w);
     if (directions <= 0 || gatherRange.z >= gatherRange.w) return vec3(0.0);
-    vec3 t = normalize(abs(n.y) < 0.99 ? cross(n, vec3(0.0, 1.0, 0.0)) : cross(n, vec3(1.0, 0.0, 0.0)));
-    vec3 b = cross(n, t);
     float visible = 0.0;
     for (int i = gatherRange.z; i < gatherRange.w; ++i) {
-        float u1 = (float(i) + float(hash(seed + uint(2 * i)) >> 8) / 16777216.0) / float(directions);
-        float u2 = float(hash(seed + uint(2 * i + 1)) >> 8) / 16777216.0;
-        float r = sqrt(u1), phi = 2.0 * PI * u2;
-        vec3 w = normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(max(1.0 - u1, 0.0)) * n);
+        vec3 w = stratifiedCosineDirection(n, i, directions, seed);
 #ifdef VISIBILITY_VOXEL
         int coarsest = voxelLevels() - 1;
         float toBoundary = exitDistance(x, w, levelOrigin(coarsest),
@@ -133,6 +132,7 @@ void main() {
     uint receiver = hash(uint(texel.y * resolution + texel.x) ^ floatBitsToUint(atlas.sampling.y));
     vec3 sum = vec3(0.0), sumBack = vec3(0.0);
     float floorPerPower = area ? importanceFloor(rowPower[resolution - 1]) : 0.0;
+    float nearReach2 = nearFieldReach2();
     for (int i = gatherRange.x; i < gatherRange.y; ++i) {
         ivec2 t;
         if (area) {
@@ -148,7 +148,7 @@ void main() {
         if (y.w <= 0.0) continue;
         vec3 d = y.xyz - x;
         float r2 = dot(d, d);
-        if (r2 <= 0.0) continue;
+        if (r2 <= 0.0 || (area && r2 < nearReach2)) continue;
         vec3 w = d * inversesqrt(r2);
         vec4 senderNormal = texelFetch(atlasNormal, t, 0);
         bool senderTwoSided = senderNormal.w > 0.5;
@@ -193,6 +193,15 @@ void main() {
     vec3 skyBack = receiverTwoSided
             ? skyIrradiance(x, -nx, receiverPosition.w, receiver * 7919u + 1u) * float(count)
             : vec3(0.0);
+    // The near field (near_field.glsl), counted like the sky.
+    if (area) {
+        sky += nearFieldIrradiance(x, nx, receiverPosition.w, receiver * 7919u + 2u, atlasDirect,
+                       atlasDirectBack, atlasNormal) * float(count);
+        if (receiverTwoSided) {
+            skyBack += nearFieldIrradiance(x, -nx, receiverPosition.w, receiver * 7919u + 3u,
+                               atlasDirect, atlasDirectBack, atlasNormal) * float(count);
+        }
+    }
     outSum = vec4(sum * scale + sky, 1.0);
     outSumBack = vec4(sumBack * scale + skyBack, 1.0);
 }

@@ -60,6 +60,8 @@
 #define BIND_SSBO_ATLAS_SURFACE_POINTS 23 // uint[SURFACE_POINT_UINTS x points]: the surfaces'
                                         // receivers as triangles and barycentric weights
                                         // (atlas::SurfacePoint)
+#define BIND_SSBO_ATLAS_INDICES     24  // uint[3 per triangle]: the atlas' triangles, in the
+                                        // scene's order (atlas::AtlasGeometry)
 
 // Texture units for samplers.
 #define BIND_TEX_BASE_COLOR         0   // sRGB8_A8 base colour of the current draw
@@ -198,6 +200,7 @@
 #define TEMPORAL_LOCAL_SIZE         8   // the temporal filter runs 8x8 texel groups
 #define TRACE_REUSE_LOCAL_SIZE      8   // trace reuse runs 8x8 texel groups
 
+#define BVH_MAX_LEAF_TRIANGLES      4   // triangles per leaf of the scene's BVH at most
 #define ATLAS_SENDER_BLOCK          16  // texels per block of the sender table's row prefix sums
 #define ATLAS_POOL_STRIDE           64  // sender points per stratum (a receiver uses one)
 #define ATLAS_SENDER_LOCAL_SIZE     64  // work-group size of atlas/sender_sampling
@@ -209,6 +212,7 @@
 #define ATLAS_POSE_LOCAL_SIZE       64  // work-group size of atlas/follow_pose
 #define SCENE_VERTEX_FLOATS         14  // floats per GpuScene vertex (scene::SceneVertex)
 #define ATLAS_VERTEX_FLOATS         18  // floats per atlas vertex (atlas::GpuAtlasVertex)
+#define ATLAS_VERTEX_UV_OFFSET      14  // the float at which its atlas coordinates start
 #define ATLAS_ESTIMATOR_AREA        0   // L cos cos / r^2 x sample area: the rendering equation
 #define ATLAS_ESTIMATOR_MERZ2010    1   // the thesis' eq. 9: L cos(theta_x) x 2 pi / N
 #define ATLAS_VISIBILITY_NONE       0   // senders are never occluded (the thesis)
@@ -279,6 +283,8 @@
 #define LOC_INJECT_FLUX_SUM         37  // vec2, x = fixed-point units per unit of flux / voxel
                                         // face area (fluxSumScale, InjectPass.h), y = the
                                         // light view's ordinal (seeds the rounding)
+#define LOC_ATLAS_NEAR_RANGE        38  // ivec4: the near field's directions [x, y) this draw
+                                        // adds, z = nodes a ray's walk may visit
 #define LOC_PRESENT_EXPOSURE        11  // float, display exposure: 2^EV or the auto exposure
 #define LOC_PRESENT_CURVE           12  // int, TONE_CURVE_NONE or TONE_CURVE_FILMIC
 #define LOC_LINESPACE_LEVEL         13  // int, N-tree level an occupancy reduction writes
@@ -548,6 +554,10 @@ struct AtlasUniforms {                  // std140
                                         // every surface sends (gi.bounces > 1), 0 when only
                                         // directly lit texels do; w = the smallest r^2 (m^2)
                                         // the importance's 1/r^2 uses
+    vec4 nearField;                     // x = the near field's directions per receiver side
+                                        // and set (atlas.near_rays, 0 = none), y = its reach
+                                        // squared (m^2): senders nearer the receiver count
+                                        // through its rays, not the area estimator's draw
 };
 
 #ifdef __cplusplus

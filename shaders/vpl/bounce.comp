@@ -23,6 +23,7 @@
 // Partial coverage stops a ray with that probability (the march's transmittance as a
 // stochastic hit), with a fixed random number per ray so the VPLs are the same every time.
 #include "../common/constants.glsl"
+#include "../common/cosine_direction.glsl"
 #include "../common/hash.glsl"
 #include "../common/voxel_visibility.glsl"
 
@@ -52,18 +53,6 @@ struct SurfaceHit {
 vec2 r2Point(uint k) {
     uvec2 fixedPoint = uvec2(k) * uvec2(0xC13FA9A9u, 0x91E10DA5u) + uvec2(0x80000000u);
     return vec2(fixedPoint >> 8) / 16777216.0;
-}
-
-vec3 cosineDirection(vec3 n, vec2 u) {
-    // Duff et al. 2017: an orthonormal basis about n without a branch on its direction.
-    float s = n.z >= 0.0 ? 1.0 : -1.0;
-    float a = -1.0 / (s + n.z);
-    float b = n.x * n.y * a;
-    vec3 t = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
-    vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
-    float r = sqrt(u.x);
-    float phi = 2.0 * PI * u.y;
-    return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
 }
 
 // Where, between p and b inside the voxel, the ray meets the voxel's surface: its plane's

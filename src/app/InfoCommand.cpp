@@ -13,6 +13,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace gi::app {
 namespace {
@@ -151,22 +153,29 @@ void printVplMemory(const scene::Scene& scene, const std::vector<scene::Light>& 
     }
 }
 
-// The BVH that atlas.visibility=bvh and vpl.visibility=bvh trace: the shadow rays' tree,
-// built once for all of them.
+// The BVH that atlas.visibility=bvh, the atlas' near field and vpl.visibility=bvh trace: the
+// shadow rays' tree, built once for all of them.
 void printGiRayMemory(const scene::Scene& scene, const std::vector<scene::Light>& lights,
         const Settings& settings) {
-    const bool atlas = settings.atlas.visibility == ATLAS_VISIBILITY_BVH;
-    const bool vpl = settings.vpl.visibility == VPL_VISIBILITY_BVH;
-    if (!atlas && !vpl) return;
+    std::vector<std::string> users;
+    if (settings.atlas.visibility == ATLAS_VISIBILITY_BVH) users.push_back("atlas.visibility=bvh");
+    if (settings.atlas.estimator == ATLAS_ESTIMATOR_AREA && settings.atlas.nearRays > 0) {
+        users.push_back("the atlas' near field (atlas.near_rays)");
+    }
+    if (settings.vpl.visibility == VPL_VISIBILITY_BVH) users.push_back("vpl.visibility=bvh");
+    if (users.empty()) return;
+    std::string who = users[0];
+    for (std::size_t i = 1; i < users.size(); ++i) {
+        who += (i + 1 == users.size() ? " and " : ", ") + users[i];
+    }
     Settings rays = settings;
     rays.shadow.enabled = true;
     rays.shadow.method = SHADOW_METHOD_BVH;
     const render::ShadowMethodReport tree = render::plannedShadowMethod(scene, lights, rays);
     const bool shared = settings.shadow.enabled && settings.shadow.method == SHADOW_METHOD_BVH;
     const bool small = tree.bytes < (std::size_t(1) << 20);
-    std::printf("  GI rays: %s%s%s trace%s the %s, at most %.2f %s%s\n",
-            atlas ? "atlas.visibility=bvh" : "", atlas && vpl ? " and " : "",
-            vpl ? "vpl.visibility=bvh" : "", atlas && vpl ? "" : "s", tree.structure.c_str(),
+    std::printf("  GI rays: %s trace%s the %s, at most %.2f %s%s\n", who.c_str(),
+            users.size() > 1 ? "" : "s", tree.structure.c_str(),
             small ? double(tree.bytes) / 1024.0 : mebibytes(tree.bytes), small ? "KiB" : "MiB",
             shared ? " (the shadows' own)" : "");
 }

@@ -345,6 +345,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 "view), or x what the scene's surfaces can receive of it",
                 {"power", "view", "surfaces"},
                 [](Settings& s) -> int& { return s.atlas.importance; }),
+        intSetting("atlas.near_rays",
+                "rays per receiver side and set through the scene's triangles for the light of "
+                "surfaces within two texel edges, which the area estimator's 1/r^2 clamp leaves "
+                "out (0 = none)",
+                0, 1024, [](Settings& s) -> int& { return s.atlas.nearRays; }),
         intSetting("atlas.gutter", "empty texels between atlas charts", 2, 16,
                 [](Settings& s) -> int& { return s.atlas.gutter; }),
         boolSetting("atlas.cache", "keep built atlases in the cache directory",

@@ -143,6 +143,9 @@ struct AtlasSettings {
                                   // power x what the camera's view can receive of it (the atlas'
                                   // light then depends on the view in its noise), or x what the
                                   // scene's surfaces can receive of it (it does not)
+    int nearRays = 8;             // atlas.near_rays: directions per receiver side and set that
+                                  // add the senders within the 1/r^2 clamp (near_field.glsl);
+                                  // 0 = none
     bool cache = true;            // atlas.cache: keep built atlases on disk
     bool operator==(const AtlasSettings&) const = default;
 };

@@ -63,6 +63,7 @@ struct GiFrameInputs {
     // asked for it: the most loop iterations one ray through it runs (every node and
     // triangle once), for splitting work within SHADER_LOOP_ITERATIONS; 0 when none is bound.
     int bvhRayIterations = 0;
+    int bvhNodes = 0;   // that BVH's node count (0 when none is bound)
 };
 
 struct GiOutputs {

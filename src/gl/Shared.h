@@ -19,7 +19,7 @@ static_assert(sizeof(gi::shader::GpuMaterial) == 64, "GpuMaterial std430 layout 
 static_assert(sizeof(gi::shader::GpuShadow) == 96, "GpuShadow std430 layout drifted");
 static_assert(sizeof(gi::shader::VoxelUniforms) == 8 * 16 + 16 * 10,
         "VoxelUniforms std140 layout drifted");
-static_assert(sizeof(gi::shader::AtlasUniforms) == 5 * 16, "AtlasUniforms std140 layout drifted");
+static_assert(sizeof(gi::shader::AtlasUniforms) == 6 * 16, "AtlasUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::GpuVpl) == 3 * 16, "GpuVpl std430 layout drifted");
 static_assert(sizeof(gi::shader::VplUniforms) == 3 * 16, "VplUniforms std140 layout drifted");
 static_assert(sizeof(gi::shader::SvoUniforms) == 3 * 16, "SvoUniforms std140 layout drifted");

@@ -5,6 +5,7 @@
 // node i + 1 and a shader walks the tree with a short stack (shaders/common/bvh.glsl).
 #pragma once
 
+#include "gl/Shared.h"
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -15,14 +16,14 @@
 
 namespace gi::reference {
 
-inline constexpr unsigned kMaxLeafTriangles = 4;
+inline constexpr unsigned kMaxLeafTriangles = BVH_MAX_LEAF_TRIANGLES;
 
 struct GpuBvh {
     // Two vec4 per node, the layout of GpuBvhNode (shaders/common/shared.h):
     // (min.xyz, inner: index of the right child / leaf: -(triangle count), as int bits),
     // (max.xyz, leaf: first triangle, as int bits).
     std::vector<glm::vec4> nodes;
-    std::vector<glm::vec4> triangles;   // three corners per triangle, world space, w = 0
+    std::vector<glm::vec4> triangles;   // three corners per triangle, world space, w as given
     int depth = 0;                      // longest root-to-leaf path (the shader's stack bound)
     double buildSeconds = 0.0;
     std::size_t nodeCount() const { return nodes.size() / 2; }
@@ -30,8 +31,8 @@ struct GpuBvh {
     std::size_t bytes() const { return (nodes.size() + triangles.size()) * sizeof(glm::vec4); }
 };
 
-// Over the triangles given as three world-space corners each (w ignored; render/ShadowCasters.h
-// collects them). False with `error` when Embree fails.
+// Over the triangles given as three world-space corners each (w kept with its corner, unread;
+// render/ShadowCasters.h collects them). False with `error` when Embree fails.
 bool buildGpuBvh(const std::vector<glm::vec4>& corners, GpuBvh& bvh, std::string& error);
 
 } // namespace gi::reference

@@ -197,14 +197,21 @@ void FrameRenderer::updateShadowRays(gl::GpuProfiler& profiler) {
 }
 
 int FrameRenderer::updateGiBvh(gl::GpuProfiler& profiler) {
+    // The atlas' near field walks it whatever tests the visibility of its other senders.
+    const bool atlasNearField = mSettings.atlas.estimator == ATLAS_ESTIMATOR_AREA &&
+                                mSettings.atlas.nearRays > 0;
     const bool wanted =
-            (mMode == GiMode::Atlas && mSettings.atlas.visibility == ATLAS_VISIBILITY_BVH) ||
+            (mMode == GiMode::Atlas &&
+                    (mSettings.atlas.visibility == ATLAS_VISIBILITY_BVH || atlasNearField)) ||
             (mMode == GiMode::Vpl && mSettings.vpl.visibility == VPL_VISIBILITY_BVH);
     if (!wanted) return 0;
     std::string error;
     if (!mBvhShadows.update(*mPosedScene, mScene->geometryVersion(), profiler, error)) {
-        std::fprintf(stderr, "%s=bvh: %s\n",
-                mMode == GiMode::Atlas ? "atlas.visibility" : "vpl.visibility", error.c_str());
+        std::fprintf(stderr, "%s: %s\n",
+                mMode == GiMode::Vpl                                   ? "vpl.visibility=bvh"
+                : mSettings.atlas.visibility == ATLAS_VISIBILITY_BVH ? "atlas.visibility=bvh"
+                                                                       : "atlas.near_rays",
+                error.c_str());
         return 0;
     }
     mBvhShadows.bind();
@@ -254,13 +261,16 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     const std::optional<OccupancyVolume> occupancy =
             needsOccupancy ? updateOccupancy(camera, profiler) : std::nullopt;
     const int bvhRayIterations = updateGiBvh(profiler);
+    const int bvhNodes = bvhRayIterations > 0 ? int(std::min<std::size_t>(
+                                                        mBvhShadows.bvh().nodeCount(), INT_MAX))
+                                              : 0;
     GiOutputs gi;
     if (mGi) {
         const DebugView debugView = outputAvailable(output, mMode)
                                             ? outputEntry(output).debugView
                                             : DebugView::None;
         mGi->update({*mScene, mLights, mShadows, mFrameUniforms, camera, mRenderSize, debugView,
-                            occupancy ? &*occupancy : nullptr, bvhRayIterations},
+                            occupancy ? &*occupancy : nullptr, bvhRayIterations, bvhNodes},
                 profiler);
         gi = mGi->outputs();
     }

@@ -112,7 +112,8 @@ private:
     // Builds or refreshes the BVH or line space the shadow method traces, if it traces one,
     // for the scene as last posed.
     void updateShadowRays(gl::GpuProfiler& profiler);
-    // The scene's BVH for atlas.visibility=bvh and vpl.visibility=bvh: built when needed and
+    // The scene's BVH for atlas.visibility=bvh, the atlas' near field (atlas.near_rays) and
+    // vpl.visibility=bvh: built when needed and
     // bound for the GI pass; returns GiFrameInputs::bvhRayIterations (0 when not asked for).
     int updateGiBvh(gl::GpuProfiler& profiler);
     std::optional<OccupancyVolume> updateOccupancy(const scene::CameraView& camera, gl::GpuProfiler& profiler);

@@ -13,8 +13,10 @@
 
 namespace gi::render {
 
-// Three world-space corners per casting triangle in its current pose (w = 0); degenerate
-// triangles are left out.
+// Three world-space corners per casting triangle in its current pose; degenerate triangles are
+// left out. Each corner's w holds, as int bits, the triangle's index in the scene's flattened
+// order (instances in order, each primitive's triangles in order, degenerate ones counted):
+// scene::GpuScene's and the atlas' triangle order, so a ray's hit can find its atlas texel.
 [[nodiscard]] std::vector<glm::vec4> shadowCasterCorners(const scene::Scene& scene);
 
 } // namespace gi::render

@@ -48,16 +48,21 @@ TEST(ResourcePlanCommand, InfoPrintsBothPlans) {
     EXPECT_TRUE(fixed.err.empty()) << fixed.err;
 }
 
-// The BVH that the atlas' and the VPLs' rays trace is in the plan, once for both, and only
-// when one of them asks for it.
+// The BVH that the atlas' and the VPLs' rays trace is in the plan, once for all of them, and
+// only when one of them asks for it: the atlas' near field does by default.
 TEST(ResourcePlanCommand, InfoPrintsTheBvhTheGiRaysTrace) {
-    const ProcessResult both = runVoxatlas({"info", kBox, "--set", "atlas.visibility=bvh", "--set",
+    const ProcessResult all = runVoxatlas({"info", kBox, "--set", "atlas.visibility=bvh", "--set",
             "vpl.visibility=bvh"});
-    ASSERT_EQ(both.exitCode, 0) << both.err;
-    EXPECT_NE(both.out.find("GI rays: atlas.visibility=bvh and vpl.visibility=bvh trace the BVH "
-                            "over "),
-            std::string::npos) << both.out;
-    const ProcessResult none = runVoxatlas({"info", kBox});
+    ASSERT_EQ(all.exitCode, 0) << all.err;
+    EXPECT_NE(all.out.find("GI rays: atlas.visibility=bvh, the atlas' near field (atlas.near_rays) "
+                           "and vpl.visibility=bvh trace the BVH over "),
+            std::string::npos) << all.out;
+    const ProcessResult defaults = runVoxatlas({"info", kBox});
+    ASSERT_EQ(defaults.exitCode, 0) << defaults.err;
+    EXPECT_NE(defaults.out.find("GI rays: the atlas' near field (atlas.near_rays) traces the BVH "
+                                "over "),
+            std::string::npos) << defaults.out;
+    const ProcessResult none = runVoxatlas({"info", kBox, "--set", "atlas.near_rays=0"});
     ASSERT_EQ(none.exitCode, 0) << none.err;
     EXPECT_EQ(none.out.find("GI rays"), std::string::npos) << none.out;
 }

@@ -4,6 +4,7 @@
 #include "gl/RenderTarget.h"
 #include "gl/Shared.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace gi::atlas {
@@ -80,9 +81,24 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     // receiver.
     const int segment = bvh ? in.bvhRayIterations
                             : in.occupancy ? in.occupancy->visibilityLoopIterations() : 0;
+    glProgramUniform4i(program, LOC_ATLAS_NEAR_RANGE, 0, 0, 0, 0);
     for (const glm::ivec2& sky : gl::rangesWithinLoopBudget(in.skyDirections, 2 * (1 + segment))) {
         glProgramUniform4i(program, LOC_ATLAS_GATHER_RANGE, 0, 0, sky.x, sky.y);
         glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    if (in.nearRays > 0 && in.bvhNodes > 0 && in.geometry) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_VERTICES, in.geometry->vertexBuffer().id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_ATLAS_INDICES, in.geometry->indexBuffer().id());
+        // A ray's walk: its nodes, each leaf's triangles; for each side of a double-sided
+        // receiver.
+        const int nodes = std::min(in.bvhNodes, kNearRayNodes);
+        const int walk = nodes * (1 + BVH_MAX_LEAF_TRIANGLES);
+        glProgramUniform4i(program, LOC_ATLAS_GATHER_RANGE, 0, 0, 0, 0);
+        for (const glm::ivec2& near : gl::rangesWithinLoopBudget(in.nearRays, 2 * (1 + walk))) {
+            glProgramUniform4i(program, LOC_ATLAS_NEAR_RANGE, near.x, near.y, nodes, 0);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+        glProgramUniform4i(program, LOC_ATLAS_NEAR_RANGE, 0, 0, 0, 0);
     }
     for (const glm::ivec2& samples : gl::rangesWithinLoopBudget(in.sampleCount, 1 + segment)) {
         glProgramUniform4i(program, LOC_ATLAS_GATHER_RANGE, samples.x, samples.y, 0, 0);

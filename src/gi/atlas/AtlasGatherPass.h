@@ -9,13 +9,15 @@
 //          scene's BVH for visibility.
 // Outputs: AtlasTextures sums (RGBA32F): rgb += estimator constant x sum over this set,
 //          a = 1 where a receiver was written.
-// A set is drawn in several draws, the sky's directions and then ranges of the samples, each
-// within SHADER_LOOP_ITERATIONS for the visibility walk's longest segments (gl/LoopBudget.h).
+// A set is drawn in several draws, the sky's directions, the near field's and then ranges of
+// the samples, each within SHADER_LOOP_ITERATIONS for the visibility walk's longest segments
+// (gl/LoopBudget.h).
 // With gi.bounces > 1 bounce b reads the senders of AtlasTextures::senderRadiance(b) and adds
 // to sumsOf(b).
 #pragma once
 
 #include "gi/GiTechnique.h"
+#include "gi/atlas/AtlasGeometry.h"
 #include "gi/atlas/AtlasSenderSamplingPass.h"
 #include "gi/atlas/AtlasTextures.h"
 #include "gl/GpuProfiler.h"
@@ -39,7 +41,17 @@ public:
         // > 0: visibility by rays through the scene's BVH bound at BIND_SSBO_BVH_* (instead of
         // the occupancy), each running at most this many loop iterations.
         int bvhRayIterations = 0;
+        // The near field (shaders/atlas/near_field.glsl): its rays per receiver side and set
+        // (AtlasUniforms dilation.w), through the BVH bound at BIND_SSBO_BVH_* when `bvhNodes`
+        // (its node count) > 0, finding their texels through `geometry`'s triangles.
+        int nearRays = 0;
+        int bvhNodes = 0;
+        const AtlasGeometry* geometry = nullptr;
     };
+
+    // Nodes a near-field ray's walk visits at most: its segment is two texel edges long, so
+    // in any tree it meets few; a walk cut short counts as meeting nothing.
+    static constexpr int kNearRayNodes = 512;
     struct Outputs {
         const AtlasTextures& textures;    // sumsOf(bounce), a layer attach() bound (blended into)
     };

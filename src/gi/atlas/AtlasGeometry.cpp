@@ -9,6 +9,8 @@ namespace gi::atlas {
 
 static_assert(sizeof(GpuAtlasVertex) == ATLAS_VERTEX_FLOATS * sizeof(float),
         "GpuAtlasVertex must match atlas/follow_pose.comp");
+static_assert(offsetof(GpuAtlasVertex, atlasUv) == ATLAS_VERTEX_UV_OFFSET * sizeof(float),
+        "GpuAtlasVertex::atlasUv must be where atlas/near_field.glsl reads it");
 
 void AtlasGeometry::upload(const AtlasMesh& mesh, const Atlas& atlas, bool followsPose) {
     std::vector<GpuAtlasVertex> vertices(atlas.vertices.size());

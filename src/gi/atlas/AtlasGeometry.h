@@ -30,6 +30,7 @@ public:
     void upload(const AtlasMesh& mesh, const Atlas& atlas, bool followsPose);
     const gl::VertexArray& vertexArray() const { return mVertexArray; }
     const gl::Buffer& vertexBuffer() const { return mVertices; }
+    const gl::Buffer& indexBuffer() const { return mIndices; }   // 3 per triangle, the scene's order
     const gl::Buffer& sources() const { return mSources; }   // empty unless followsPose
     std::size_t vertexCount() const { return mVertexCount; }
 

@@ -21,6 +21,14 @@ constexpr int kSkyDirectionsPerSet = 16;
 // (vpl::kViewIndependentShare): nothing the receivers miss is left out of the draw.
 constexpr float kImportanceFloorShare = 0.1f;
 
+// The near field's reach (shaders/atlas/near_field.glsl), in texel edges: three times the
+// radius within which the area estimator's 1/r^2 stops growing. Beyond the clamp's own radius
+// it also takes over the senders whose segments the voxel march blocks most wrongly, those
+// within a voxel or two (a texel is half the adaptive plan's finest voxel): the open-front box's
+// converged atlas 0.144 at the clamp's radius, 0.124 at twice, 0.115 at three times, 0.112 at
+// four (docs/accuracy-analysis.md).
+constexpr double kNearFieldReachTexels = 6.0;
+
 // The sky's directions per set: none without a sky.
 int skyDirections(const GiFrameInputs& in) {
     return scene::skyRadiance(in.lights) != glm::vec3(0.0f) ? kSkyDirectionsPerSet : 0;
@@ -171,6 +179,7 @@ bool AtlasGi::configure(const Settings& settings, std::string& error) {
         mImportanceReady = false;
         mFrameIndex = 0;
         mWarnedNoVisibility = false;
+        mWarnedNoNearField = false;
     }
     return true;
 }
@@ -200,6 +209,8 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
             bySurfaces ? float(mSurfacePoints.areaPerPoint) : estimatorConstant;
     u.importance = glm::vec4(drawsByImportance() && mImportanceReady ? kImportanceFloorShare : 0.0f,
             float(cells), mBounces > 1 ? 1.0f : 0.0f, importanceClamp);
+    const double reach = kNearFieldReachTexels * mAtlas.texelSize;
+    u.nearField = glm::vec4(float(nearRays(in)), float(reach * reach), 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
 
@@ -227,6 +238,20 @@ int AtlasGi::visibilityBvh(const GiFrameInputs& in) {
         mWarnedNoVisibility = true;
     }
     return in.bvhRayIterations;
+}
+
+int AtlasGi::nearRays(const GiFrameInputs& in) {
+    if (mSettings.estimator != ATLAS_ESTIMATOR_AREA || mSettings.nearRays <= 0) return 0;
+    if (in.bvhNodes <= 0) {
+        if (!mWarnedNoNearField) {
+            std::fprintf(stderr,
+                    "atlas: atlas.near_rays needs the scene's BVH and this frame has none; the "
+                    "senders within two texel edges count only as far as the clamp lets them\n");
+            mWarnedNoNearField = true;
+        }
+        return 0;
+    }
+    return mSettings.nearRays;
 }
 
 AtlasGi::FramePlan AtlasGi::planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy) {
@@ -333,7 +358,8 @@ void AtlasGi::update(const GiFrameInputs& in, gl::GpuProfiler& profiler) {
                         {mTextures, mUniforms, mSettings.samples, table, bounce}, profiler);
             }
             mGather.execute({mTextures, mSamples, mUniforms, occupancy, mSenderSampling, bounce,
-                                    mSettings.samples, skyDirections(in), bvhRayIterations},
+                                    mSettings.samples, skyDirections(in), bvhRayIterations,
+                                    nearRays(in), in.bvhNodes, &mGeometry},
                     {mTextures}, profiler);
             mDilate.execute({mTextures, mUniforms, bounce}, {mTextures}, profiler);
         }

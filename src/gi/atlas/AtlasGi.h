@@ -89,6 +89,9 @@ private:
     const OccupancyVolume* visibilityOccupancy(const GiFrameInputs& in);
     // The loop iterations of a ray through the scene's BVH (atlas.visibility=bvh), or 0.
     int visibilityBvh(const GiFrameInputs& in);
+    // The near field's rays per receiver side and set: atlas.near_rays with the area estimator
+    // when the frame has the BVH they walk, else 0.
+    int nearRays(const GiFrameInputs& in);
     // Decides this frame's work and records in mContent what the layers will hold after it.
     FramePlan planFrame(const GiFrameInputs& in, const OccupancyVolume* occupancy);
     // The frame's AtlasUniforms: the only write of the buffer per frame.
@@ -115,6 +118,7 @@ private:
     Content mContent;
     std::uint32_t mFrameIndex = 0;     // frames since configure: the set when not progressive
     bool mWarnedNoVisibility = false;  // a missing occupancy or BVH is reported once per configure
+    bool mWarnedNoNearField = false;
     int mDebugView = -1;               // FramePlan::view of the last frame, for outputs()
     bool mConverging = false;          // GiOutputs::converging of the last frame
 
