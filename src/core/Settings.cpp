@@ -346,10 +346,14 @@ const std::vector<SettingSpec>& settingSpecs() {
                 {"power", "view", "surfaces"},
                 [](Settings& s) -> int& { return s.atlas.importance; }),
         intSetting("atlas.near_rays",
-                "rays per receiver side and set through the scene's triangles for the light of "
-                "surfaces within two texel edges, which the area estimator's 1/r^2 clamp leaves "
-                "out (0 = none)",
+                "rays per receiver side and set through the scene's triangles that count the "
+                "senders within atlas.near_reach, which the area estimator's 1/r^2 clamp and the "
+                "voxel march get wrong (0 = none: the estimator counts them)",
                 0, 1024, [](Settings& s) -> int& { return s.atlas.nearRays; }),
+        floatSetting("atlas.near_reach",
+                "how far the near field's rays count senders, in texel edges (at least the 2 of "
+                "the estimator's 1/r^2 clamp)",
+                2.0f, 64.0f, [](Settings& s) -> float& { return s.atlas.nearReach; }),
         intSetting("atlas.gutter", "empty texels between atlas charts", 2, 16,
                 [](Settings& s) -> int& { return s.atlas.gutter; }),
         boolSetting("atlas.cache", "keep built atlases in the cache directory",

@@ -143,9 +143,14 @@ struct AtlasSettings {
                                   // power x what the camera's view can receive of it (the atlas'
                                   // light then depends on the view in its noise), or x what the
                                   // scene's surfaces can receive of it (it does not)
-    int nearRays = 8;             // atlas.near_rays: directions per receiver side and set that
-                                  // add the senders within the 1/r^2 clamp (near_field.glsl);
+    int nearRays = 4;             // atlas.near_rays: directions per receiver side and set that
+                                  // count the senders within atlas.near_reach (near_field.glsl);
                                   // 0 = none
+    float nearReach = 6.0f;       // atlas.near_reach: that reach in texel edges, at least the
+                                  // 2 within which the estimator's 1/r^2 stops growing; 6 also
+                                  // takes the senders within a voxel or two, which the voxel
+                                  // march blocks most wrongly, and further gains little
+                                  // (docs/accuracy-analysis.md)
     bool cache = true;            // atlas.cache: keep built atlases on disk
     bool operator==(const AtlasSettings&) const = default;
 };

@@ -21,14 +21,6 @@ constexpr int kSkyDirectionsPerSet = 16;
 // (vpl::kViewIndependentShare): nothing the receivers miss is left out of the draw.
 constexpr float kImportanceFloorShare = 0.1f;
 
-// The near field's reach (shaders/atlas/near_field.glsl), in texel edges: three times the
-// radius within which the area estimator's 1/r^2 stops growing. Beyond the clamp's own radius
-// it also takes over the senders whose segments the voxel march blocks most wrongly, those
-// within a voxel or two (a texel is half the adaptive plan's finest voxel): the open-front box's
-// converged atlas 0.144 at the clamp's radius, 0.124 at twice, 0.115 at three times, 0.112 at
-// four (docs/accuracy-analysis.md).
-constexpr double kNearFieldReachTexels = 6.0;
-
 // The sky's directions per set: none without a sky.
 int skyDirections(const GiFrameInputs& in) {
     return scene::skyRadiance(in.lights) != glm::vec3(0.0f) ? kSkyDirectionsPerSet : 0;
@@ -209,7 +201,7 @@ void AtlasGi::writeUniforms(const FramePlan& plan, const GiFrameInputs& in) {
             bySurfaces ? float(mSurfacePoints.areaPerPoint) : estimatorConstant;
     u.importance = glm::vec4(drawsByImportance() && mImportanceReady ? kImportanceFloorShare : 0.0f,
             float(cells), mBounces > 1 ? 1.0f : 0.0f, importanceClamp);
-    const double reach = kNearFieldReachTexels * mAtlas.texelSize;
+    const double reach = double(mSettings.nearReach) * mAtlas.texelSize;
     u.nearField = glm::vec4(float(nearRays(in)), float(reach * reach), 0.0f, 0.0f);
     glNamedBufferSubData(mUniforms.id(), 0, sizeof u, &u);
 }
