@@ -20,8 +20,9 @@
 //                             the error (Cornell box at 2048 samples: relative RMSE 0.52 with
 //                             a one-texel clamp, 0.32 with two, for 0.2% less energy). With
 //                             atlas.near_rays senders within the near field's reach
-//                             (nearField.y, three times the clamp's radius) are skipped here:
-//                             rays count them, with the whole kernel (near_field.glsl).
+//                             (nearField.y, atlas.near_reach: by default three times the
+//                             clamp's radius) are skipped here: rays count them, with the
+//                             whole kernel (near_field.glsl).
 //   ATLAS_ESTIMATOR_MERZ2010  sum L(y) cos(theta_x) * 2 pi / N over the Hammersley points of
 //                             the atlas (rotated by the set's offset, the same for every
 //                             receiver; points on empty texels count as zero): the thesis'

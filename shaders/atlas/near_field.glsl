@@ -6,7 +6,8 @@
 // to them hold the surfaces that meet the receiver's). Where two surfaces meet (a block on a
 // sunlit floor, every corner of a room) most of the light a receiver near the edge gets comes
 // from there. The near field counts every sender nearer than its reach instead (nearField.y,
-// three times sqrt(B)), and the area estimator skips them:
+// atlas.near_reach texel edges: by default three times sqrt(B)), and the area estimator skips
+// them:
 //   E_near(x) = integral over r < reach of L(y) cos(theta_x) cos(theta_y) / r^2 dA(y)
 //             = integral over the hemisphere of L(y(w)) cos(theta_x) [r(w) < reach] dw,
 // y(w) the first surface the receiver sees in direction w. Cosine-distributed directions

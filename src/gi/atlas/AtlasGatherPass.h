@@ -42,15 +42,15 @@ public:
         // the occupancy), each running at most this many loop iterations.
         int bvhRayIterations = 0;
         // The near field (shaders/atlas/near_field.glsl): its rays per receiver side and set
-        // (AtlasUniforms dilation.w), through the BVH bound at BIND_SSBO_BVH_* when `bvhNodes`
+        // (AtlasUniforms nearField.x), through the BVH bound at BIND_SSBO_BVH_* when `bvhNodes`
         // (its node count) > 0, finding their texels through `geometry`'s triangles.
         int nearRays = 0;
         int bvhNodes = 0;
         const AtlasGeometry* geometry = nullptr;
     };
 
-    // Nodes a near-field ray's walk visits at most: its segment is two texel edges long, so
-    // in any tree it meets few; a walk cut short counts as meeting nothing.
+    // Nodes a near-field ray's walk visits at most: its segment is atlas.near_reach texel
+    // edges long, so it meets few of any tree's; a walk cut short counts as meeting nothing.
     static constexpr int kNearRayNodes = 512;
     struct Outputs {
         const AtlasTextures& textures;    // sumsOf(bounce), a layer attach() bound (blended into)

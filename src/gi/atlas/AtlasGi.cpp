@@ -238,7 +238,7 @@ int AtlasGi::nearRays(const GiFrameInputs& in) {
         if (!mWarnedNoNearField) {
             std::fprintf(stderr,
                     "atlas: atlas.near_rays needs the scene's BVH and this frame has none; the "
-                    "senders within two texel edges count only as far as the clamp lets them\n");
+                    "area estimator counts the nearest senders, clamped\n");
             mWarnedNoNearField = true;
         }
         return 0;
