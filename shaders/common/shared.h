@@ -192,6 +192,8 @@
 
 #define VOXEL_MAX_LEVELS            8
 #define VOXEL_VISIBILITY_MAX_STEPS  512 // voxels one segment of voxel_visibility.glsl walks at most
+#define VOXEL_VISIBILITY_MAX_EDGES  4   // edge voxels per segment whose faces it looks up
+#define VOXEL_EDGE_NEIGHBOURS       26  // the voxels around one, searched for an edge's faces
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)

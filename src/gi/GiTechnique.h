@@ -44,9 +44,11 @@ struct OccupancyVolume {
     int levels = 1;                    // cascade levels in the textures
 
     // The loop iterations one segment of common/voxel_visibility.glsl runs at most: its walk's
-    // steps, each finding its level among `levels`, and the two ends' levels.
+    // steps, each finding its level among `levels`, the two ends' levels, and the search
+    // around each edge voxel whose faces it looks up.
     [[nodiscard]] int visibilityLoopIterations() const {
-        return 2 * levels + VOXEL_VISIBILITY_MAX_STEPS * (1 + levels);
+        return 2 * levels + VOXEL_VISIBILITY_MAX_STEPS * (1 + levels) +
+               VOXEL_VISIBILITY_MAX_EDGES * VOXEL_EDGE_NEIGHBOURS;
     }
 };
 

@@ -1,6 +1,6 @@
 // The visibility march through the voxel occupancy (shaders/common/voxel_visibility.glsl), which
-// converged atlas GI and VPL GI weight every sender by: segments past and through a voxelized
-// cube's edge and a slab thinner than a voxel, on one scene-centred level whose placement the
+// converged atlas GI and VPL GI weight every sender by: segments past, along and through a
+// voxelized cube's edge and a slab thinner than a voxel, on one scene-centred level whose placement the
 // test checks puts the edge mid-voxel and both slab faces in one voxel.
 #include "ComputeProbe.h"
 #include "GpuTest.h"
@@ -129,6 +129,11 @@ void edgeAndSlabCases(bool projectedAreas) {
             segment({-0.8f, 0.6f, 0.6f}, {0.8f, 0.6f, 0.6f}),
             // Across the slab at a slant, through several of its voxels.
             segment(slabCentre - slant * 0.2f, slabCentre + slant * 0.2f),
+            // Along the cube's +x face a fifth of a voxel outside it and on past the edge:
+            // through the edge's voxel beside the face, where the edge's mean plane lies.
+            segment({h + 0.2f * size, 0.03f, -0.2f}, {h + 0.2f * size, 0.03f, h + 0.2f}),
+            // The same a fifth of a voxel inside the face: into the cube.
+            segment({h - 0.2f * size, 0.03f, h + 0.2f}, {h - 0.2f * size, 0.03f, -0.2f}),
     };
     error.clear();
     const std::vector<glm::vec4> r = runComputeProbe<glm::vec4>(
@@ -140,6 +145,8 @@ void edgeAndSlabCases(bool projectedAreas) {
     EXPECT_LT(r[3].x, 0.05f) << "a slab thinner than a voxel blocks what crosses it";
     EXPECT_EQ(r[4].x, 1.0f) << "a segment beside everything is not blocked";
     EXPECT_LT(r[5].x, 0.05f) << "a slab blocks what crosses it at a slant";
+    EXPECT_EQ(r[6].x, 1.0f) << "a segment grazing a face past the cube's edge is not blocked";
+    EXPECT_LT(r[7].x, 0.05f) << "a segment entering the cube through its edge's voxel is blocked";
 }
 
 // A cube of half-size 0.31 at the origin and a 4 cm slab at x = 0.49..0.53, inside two squares
