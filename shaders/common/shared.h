@@ -89,6 +89,9 @@
                                         // x-slab f = the voxel seen from face f (VOXEL_FACE_*),
                                         // rgb = rho E x a (W/m^2), a = how much of the
                                         // face the surfaces facing it cover
+#define BIND_TEX_VOXEL_EDGE_FACES   27  // sampler3D rgba8_snorm (2v, v, v), the occupancy's
+                                        // level 0 only: an edge voxel's two faces at x-slabs
+                                        // 2x and 2x + 1 (voxel_edge_faces.glsl)
 
 // Texture units of the atlas passes (gi/atlas). Atlas layers are R x R, texel (i, j) covers
 // atlas coordinates [i, i+1) x [j, j+1) / R; alpha 0 = no surface.
@@ -155,6 +158,8 @@
 #define BIND_IMG_VOXEL_DISTANCE_X   6   // r8ui (v^3), the empty-distance pass' distances along x
 #define BIND_IMG_VOXEL_DISTANCE_XY  7   // r8ui (v^3), ... over x and y (the pyramid's units: no
                                         // pass binds both)
+#define BIND_IMG_VOXEL_EDGE_FACES   5   // rgba8_snorm (2v, v, v), written by the edge-faces
+                                        // pass alone (EdgeFacesPass.h)
 #define BIND_IMG_VPL_TARGET         5   // the VPL gather's (rgba32f) or filter's (rgba16f) output
 #define BIND_IMG_VPL_DEBUG_IDS      6   // r32ui, the VPL debug views: the key of the VPL drawn
                                         // over each pixel (VplDebugPass), 0 = none
@@ -192,8 +197,7 @@
 
 #define VOXEL_MAX_LEVELS            8
 #define VOXEL_VISIBILITY_MAX_STEPS  512 // voxels one segment of voxel_visibility.glsl walks at most
-#define VOXEL_VISIBILITY_MAX_EDGES  4   // edge voxels per segment whose faces it looks up
-#define VOXEL_EDGE_NEIGHBOURS       26  // the voxels around one, searched for an edge's faces
+#define VOXEL_VISIBILITY_MAX_EDGES  2   // edge voxels per segment met at their two faces
 #define INJECT_AREA                 0   // flux per fragment / surface area in the voxel
 #define INJECT_FRAGMENT             1   // the thesis: mean over fragments, summed over lights
 #define VOXEL_LOCAL_SIZE            8   // compute work groups are 8x8x8 (thesis 4.3.3.3)

@@ -7,9 +7,11 @@
 // segment only where the segment crosses its mean plane inside the voxel, weighted by its
 // coverage: a ray that grazes a wall within a voxel of it, as rays between neighbouring
 // receivers near a corner do, passes, and so does a ray passing a block's edge outside it.
-// An edge voxel's mean plane cuts the edge off, and beside each face lies air behind that plane
-// which segments grazing the face cross; where the voxels around it hold the edge's two faces
-// (voxelEdgeFaces below), the voxel blocks what enters the solid between them instead.
+// In the occupancy, an edge voxel whose two faces the voxels around it show
+// (voxel_edge_faces.glsl) blocks of what crosses its mean plane only what enters the solid
+// between its faces: a segment grazing a face beside a block's edge passes. The walk keeps the
+// first VOXEL_VISIBILITY_MAX_EDGES such voxels it meets and tests them after it (a software
+// rasterizer runs every instruction of the walk's body at every step, taken or not).
 // Voxels of surfaces facing apart (both faces of a slab thinner than a voxel) and any voxel of
 // a coarser level, whose plane is an average of its children, block by their coverage alone:
 // in the occupancy the marches walk (voxel.raster.z), the coverage across the segment's
@@ -18,18 +20,21 @@
 // Both ends first leave their own surface by one voxel along its normal, and the voxels they
 // then start in do not block, so a surface never occludes itself (the segment shrunk at both
 // ends, epsilon exits against self-hits). Parts of the segment outside the cascade count as
-// empty. A segment runs at most 2 l + VOXEL_VISIBILITY_MAX_STEPS (1 + l) loop iterations with l
-// levels (finestLevel loops over the levels): OccupancyVolume::visibilityLoopIterations, which
-// its callers split their work by (SHADER_LOOP_ITERATIONS).
+// empty. A segment runs at most 2 l + VOXEL_VISIBILITY_MAX_STEPS (1 + l) +
+// VOXEL_VISIBILITY_MAX_EDGES loop iterations with l levels (finestLevel loops over the
+// levels): OccupancyVolume::visibilityLoopIterations, which its callers split their work by
+// (SHADER_LOOP_ITERATIONS).
 #ifndef GI_VOXEL_VISIBILITY_GLSL
 #define GI_VOXEL_VISIBILITY_GLSL
 
 #include "voxel_cascade.glsl"
+#include "voxel_edge_faces.glsl"
 #include "voxel_plane.glsl"
 
 layout(binding = BIND_TEX_VOXEL_ALBEDO) uniform sampler3D voxelCoverage;
 layout(binding = BIND_TEX_VOXEL_NORMAL) uniform sampler3D voxelPlane;
 layout(binding = BIND_TEX_VOXEL_IRRADIANCE) uniform sampler3D voxelProjectedArea;
+layout(binding = BIND_TEX_VOXEL_EDGE_FACES) uniform sampler3D voxelEdgeFaces;
 
 // How much of a voxel of several surfaces a segment along dir meets, from the surfaces' area
 // projected onto the voxel's three faces (voxelize.frag), A_i, in face areas: the face the
@@ -48,84 +53,6 @@ float directionalCoverage(ivec3 texel, vec3 dir) {
             0.0, 1.0);
 }
 
-// The voxels around a voxel, nearest first: 6 sharing a face, 12 an edge, 8 a corner.
-const ivec3 kEdgeNeighbours[VOXEL_EDGE_NEIGHBOURS] = ivec3[](
-        ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0), ivec3(0, 0, 1),
-        ivec3(0, 0, -1), ivec3(1, 1, 0), ivec3(1, -1, 0), ivec3(-1, 1, 0), ivec3(-1, -1, 0),
-        ivec3(1, 0, 1), ivec3(1, 0, -1), ivec3(-1, 0, 1), ivec3(-1, 0, -1), ivec3(0, 1, 1),
-        ivec3(0, 1, -1), ivec3(0, -1, 1), ivec3(0, -1, -1), ivec3(1, 1, 1), ivec3(1, 1, -1),
-        ivec3(1, -1, 1), ivec3(1, -1, -1), ivec3(-1, 1, 1), ivec3(-1, 1, -1), ivec3(-1, -1, 1),
-        ivec3(-1, -1, -1));
-
-// A segment meets an edge's face when it comes within this many voxel sizes in front of it:
-// the faces' planes come from voxels that hold them alone, offsets to an 8-bit step (1/127),
-// so the mean plane's allowance for a surface on a voxel face (kPlaneTolerance) is not
-// needed, and every hundredth of a voxel of it thickens a block's edge for grazing segments.
-const float kEdgeFaceTolerance = 0.03;
-
-// Two unit normals closer than this are one face.
-const float kSameFace = 0.9;
-// The two faces found must explain the voxel's mean normal this well (their mean, whatever
-// share of the voxel each covers, lies within 45 degrees of either): else they are not the
-// voxel's faces and its mean plane decides.
-const float kFacesExplainMean = 0.7;
-
-// An edge or corner voxel's faces: the first two differently oriented planes held alone by
-// level-0 voxels around it (a face running on from the edge), as normal and a point on the
-// plane. A rotated block's face passes the edge voxel's face neighbours diagonally and may
-// share them with the other face, so edge and corner neighbours are searched too.
-bool voxelEdgeFaces(ivec3 texel, vec4 plane, vec3 centre, float size, out vec3 n0, out vec3 c0,
-        out vec3 n1, out vec3 c1) {
-    n0 = vec3(0.0);
-    c0 = vec3(0.0);
-    n1 = vec3(0.0);
-    c1 = vec3(0.0);
-    bool first = false;
-    ivec3 resolution = ivec3(voxelResolution());
-    for (int k = 0; k < VOXEL_EDGE_NEIGHBOURS; ++k) {
-        ivec3 neighbour = texel + kEdgeNeighbours[k];
-        if (any(lessThan(neighbour, ivec3(0))) || any(greaterThanEqual(neighbour, resolution))) {
-            continue;
-        }
-        vec4 face = texelFetch(voxelPlane, neighbour, 0);
-        if (!voxelHoldsOnePlane(face, 0, false)) continue;
-        vec3 n = normalize(face.xyz);
-        vec3 c = centre + vec3(kEdgeNeighbours[k]) * size + n * (face.w * size);
-        if (!first) {
-            n0 = n;
-            c0 = c;
-            first = true;
-        } else if (dot(n, n0) < kSameFace && dot(n, n0) > -kSameFace) {
-            n1 = n;
-            c1 = c;
-            vec3 mean = normalize(plane.xyz);
-            return dot(normalize(n0 + n1), mean) > kFacesExplainMean;
-        }
-    }
-    return false;
-}
-
-// The part [lo, hi] of the segment a + t (b - a), t in [0, 1], behind the plane through c with
-// normal n or within `tolerance` voxel sizes in front of it (lo > hi: none).
-vec2 segmentBehindPlane(vec3 n, vec3 c, float size, vec3 a, vec3 b, float tolerance) {
-    float da = dot(n, a - c) / size - tolerance;
-    float db = dot(n, b - c) / size - tolerance;
-    if (da <= 0.0 && db <= 0.0) return vec2(0.0, 1.0);
-    if (da > 0.0 && db > 0.0) return vec2(1.0, 0.0);
-    float t = da / (da - db);
-    return da <= 0.0 ? vec2(0.0, t) : vec2(t, 1.0);
-}
-
-// Whether the segment a-b meets the solid between an edge voxel's two faces: behind both at a
-// convex edge (a block's), behind either at a concave one (a room's corner), where each face
-// lies behind the other's plane or in front of it.
-bool segmentMeetsEdge(vec3 n0, vec3 c0, vec3 n1, vec3 c1, float size, vec3 a, vec3 b) {
-    vec2 behind0 = segmentBehindPlane(n0, c0, size, a, b, kEdgeFaceTolerance);
-    vec2 behind1 = segmentBehindPlane(n1, c1, size, a, b, kEdgeFaceTolerance);
-    if (dot(n0, c1 - c0) < 0.0) return max(behind0.x, behind1.x) <= min(behind0.y, behind1.y);
-    return behind0.x <= behind0.y || behind1.x <= behind1.y;
-}
-
 float endOffset(vec3 p) {
     int level = finestLevel(p);
     return level >= 0 ? levelVoxelSize(level) : 0.0;
@@ -139,6 +66,26 @@ float exitDistance(vec3 p, vec3 dir, vec3 lo, float size) {
     return max(min(t.x, min(t.y, t.z)), 0.0);
 }
 
+// An edge voxel the walk met: its level-0 texel, where the segment enters and leaves it.
+struct MetEdge {
+    ivec3 texel;
+    float enter, leave;
+};
+
+// Whether the segment a + dir t, which crosses the mean plane of an edge voxel it met, blocks
+// there: at the voxel's two faces where they are known, else at that plane. (Where it passes
+// in front of the mean plane it passes the faces too, but for the edge's tip, which the plane
+// cuts off; such segments pass, as before the faces were known.)
+bool edgeVoxelBlocks(MetEdge e, vec3 a, vec3 dir) {
+    vec4 second = texelFetch(voxelEdgeFaces, ivec3(2 * e.texel.x + 1, e.texel.yz), 0);
+    if (!edgeFacesKnown(second)) return true;
+    vec4 first = texelFetch(voxelEdgeFaces, ivec3(2 * e.texel.x, e.texel.yz), 0);
+    float size = levelVoxelSize(0);
+    vec3 centre = levelOrigin(0) + (vec3(e.texel) + 0.5) * size;
+    return segmentMeetsEdge(first, second, (a + dir * e.enter - centre) / size,
+            (a + dir * e.leave - centre) / size);
+}
+
 float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 senderNormal) {
     float sizeA = endOffset(receiver), sizeB = endOffset(sender);
     vec3 a = receiver + receiverNormal * sizeA;
@@ -150,7 +97,10 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
     float t = 0.0;
     float transmittance = 1.0;
     float coarsest = levelVoxelSize(voxelLevels() - 1);
-    int edgesLeft = VOXEL_VISIBILITY_MAX_EDGES;
+    // Only the occupancy (voxel.raster.z) has its edge voxels' faces.
+    bool edgeFaces = voxel.raster.z != 0.0;
+    MetEdge firstEdge = MetEdge(ivec3(0), 0.0, 0.0), secondEdge = firstEdge;
+    int edges = 0;
     for (int i = 0; i < VOXEL_VISIBILITY_MAX_STEPS && t < len && transmittance > 0.01; ++i) {
         vec3 p = a + dir * t;
         int level = finestLevel(p);
@@ -172,18 +122,28 @@ float voxelTransmittance(vec3 receiver, vec3 receiverNormal, vec3 sender, vec3 s
             if (!voxelMetAtPlane(plane, level)) {
                 transmittance *= 1.0 - (voxel.raster.z != 0.0 ? directionalCoverage(texel, dir)
                                                               : coverage);
-            } else {
-                vec3 centre = lo + 0.5 * size, q = a + dir * exit;
-                vec3 n0, c0, n1, c1;
-                bool edge = length(plane.xyz) < kOnePlaneNormal && edgesLeft > 0;
-                edgesLeft -= edge ? 1 : 0;
-                bool met = edge && voxelEdgeFaces(texel, plane, centre, size, n0, c0, n1, c1)
-                        ? segmentMeetsEdge(n0, c0, n1, c1, size, p, q)
-                        : segmentCrossesVoxelPlane(plane, centre, size, p, q, kPlaneTolerance);
-                if (met) transmittance *= 1.0 - coverage;
+            } else if (segmentCrossesVoxelPlane(plane, lo + 0.5 * size, size, p, a + dir * exit,
+                               kPlaneTolerance)) {
+                if (edgeFaces && edges < VOXEL_VISIBILITY_MAX_EDGES &&
+                        !voxelHoldsOnePlane(plane, level, false)) {
+                    // An edge voxel of level 0 (as voxelMetAtPlane is) that its mean plane
+                    // would block: its faces decide after the walk.
+                    MetEdge met = MetEdge(texel, t, exit);
+                    if (edges == 0) firstEdge = met;
+                    else secondEdge = met;
+                    ++edges;
+                } else {
+                    transmittance *= 1.0 - coverage;
+                }
             }
         }
         t = exit;
+    }
+    for (int k = 0; k < edges; ++k) {
+        MetEdge e = k == 0 ? firstEdge : secondEdge;
+        if (edgeVoxelBlocks(e, a, dir)) {
+            transmittance *= 1.0 - clamp(texelFetch(voxelCoverage, e.texel, 0).a, 0.0, 1.0);
+        }
     }
     return transmittance;
 }

@@ -39,16 +39,26 @@ struct OccupancyVolume {
     const gl::Texture& projectedAreas; // sampler3D rgba16f at BIND_TEX_VOXEL_IRRADIANCE: the
                                        // surfaces' area projected onto the x, y, z faces, in
                                        // face areas (rgb)
+    const gl::Texture& edgeFaces;      // sampler3D rgba8_snorm at BIND_TEX_VOXEL_EDGE_FACES:
+                                       // level 0's edge voxels' two faces (EdgeFacesPass.h;
+                                       // none in voxel GI's own cascade, which no march walks)
     const gl::Buffer& voxelUniforms;   // VoxelUniforms (std140) at BIND_UBO_VOXEL
     std::uint64_t version = 0;         // changes whenever the occupancy is recomputed
     int levels = 1;                    // cascade levels in the textures
 
     // The loop iterations one segment of common/voxel_visibility.glsl runs at most: its walk's
-    // steps, each finding its level among `levels`, the two ends' levels, and the search
-    // around each edge voxel whose faces it looks up.
+    // steps, each finding its level among `levels`, the two ends' levels, and the edge voxels
+    // it tests after the walk.
+    // Binds what the march reads at its slots (shaders/common/voxel_visibility.glsl).
+    void bind() const {
+        glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, voxelUniforms.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, coverage.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, planes.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, projectedAreas.id());
+        glBindTextureUnit(BIND_TEX_VOXEL_EDGE_FACES, edgeFaces.id());
+    }
     [[nodiscard]] int visibilityLoopIterations() const {
-        return 2 * levels + VOXEL_VISIBILITY_MAX_STEPS * (1 + levels) +
-               VOXEL_VISIBILITY_MAX_EDGES * VOXEL_EDGE_NEIGHBOURS;
+        return 2 * levels + VOXEL_VISIBILITY_MAX_STEPS * (1 + levels) + VOXEL_VISIBILITY_MAX_EDGES;
     }
 };
 

@@ -57,7 +57,8 @@ ShadowMethodReport plannedShadowMethod(const scene::Scene& scene,
         const int levels = kShadowConeLevels;
         report.structure = "occupancy " + std::to_string(settings.voxel.resolution) + "^3 x " +
                 std::to_string(levels) + " levels";
-        report.bytes = gl::totalBytes(voxel::VoxelTextures::memoryFor(settings.voxel.resolution, levels, false));
+        report.bytes = gl::totalBytes(voxel::VoxelTextures::memoryFor(
+                settings.voxel.resolution, levels, false, false, true));
     } else {
         const std::vector<glm::vec4> corners = shadowCasterCorners(scene);
         const std::size_t triangles = corners.size() / 3;

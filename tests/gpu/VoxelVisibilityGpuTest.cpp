@@ -103,10 +103,7 @@ void edgeAndSlabCases(bool projectedAreas) {
     ASSERT_LT(slabHi - slabLo, size);
 
     const gi::OccupancyVolume occupancy = manager.occupancy();
-    glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, occupancy.coverage.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, occupancy.planes.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, occupancy.projectedAreas.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy.voxelUniforms.id());
+    occupancy.bind();
 
     const glm::vec3 out = glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f));      // off the edge
     const glm::vec3 along = glm::normalize(glm::vec3(1.0f, 0.0f, -1.0f));   // past it
@@ -145,7 +142,13 @@ void edgeAndSlabCases(bool projectedAreas) {
     EXPECT_LT(r[3].x, 0.05f) << "a slab thinner than a voxel blocks what crosses it";
     EXPECT_EQ(r[4].x, 1.0f) << "a segment beside everything is not blocked";
     EXPECT_LT(r[5].x, 0.05f) << "a slab blocks what crosses it at a slant";
-    EXPECT_EQ(r[6].x, 1.0f) << "a segment grazing a face past the cube's edge is not blocked";
+    // Only the occupancy keeps its edge voxels' faces; voxel GI's cascade, which no march
+    // walks, meets them at their mean plane.
+    if (projectedAreas) {
+        EXPECT_EQ(r[6].x, 1.0f) << "a segment grazing a face past the cube's edge is not blocked";
+    } else {
+        EXPECT_LT(r[6].x, 0.05f) << "the edge's mean plane blocks a segment grazing its face";
+    }
     EXPECT_LT(r[7].x, 0.05f) << "a segment entering the cube through its edge's voxel is blocked";
 }
 

@@ -29,9 +29,9 @@ TEST(LoopBudget, RangesCoverEveryItemWithinTheBudget) {
 }
 
 TEST(LoopBudget, RangesAreAsFewAsTheBudgetAllowsAndEvenlySized) {
-    // 1 + a one-level visibility walk's 1026 iterations: 63 samples fit a draw.
-    EXPECT_EQ(itemsWithinLoopBudget(1027), 63);
-    const std::vector<glm::ivec2> ranges = rangesWithinLoopBudget(100, 1027);
+    // 1 + a one-level visibility walk's 1028 iterations: 63 samples fit a draw.
+    EXPECT_EQ(itemsWithinLoopBudget(1029), 63);
+    const std::vector<glm::ivec2> ranges = rangesWithinLoopBudget(100, 1029);
     ASSERT_EQ(ranges.size(), 2u);
     EXPECT_EQ(ranges[0], glm::ivec2(0, 50));
     EXPECT_EQ(ranges[1], glm::ivec2(50, 100));

@@ -71,10 +71,7 @@ void AtlasGatherPass::execute(const Inputs& in, const Outputs& out, gl::GpuProfi
     glBindTextureUnit(BIND_TEX_ATLAS_SAMPLES, in.samples.id());
     in.senderSampling.bind();
     if (in.occupancy && !bvh) {
-        glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
-        glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
-        glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
-        glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.occupancy->projectedAreas.id());
+        in.occupancy->bind();
     }
     glBindVertexArray(mEmpty.id());
     // A sample walks one segment or ray; a sky direction one for each side of a double-sided

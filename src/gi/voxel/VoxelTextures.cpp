@@ -20,7 +20,7 @@ gl::Texture createVolume(GLenum format, glm::ivec3 size, const char* label) {
 
 } // namespace
 
-void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces) {
+void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces, bool occupancy) {
     resolution = v;
     levels = l;
     anisotropic = anisotropicVoxels;
@@ -32,6 +32,13 @@ void VoxelTextures::allocate(int v, int l, bool anisotropicVoxels, bool bounces)
     lock = createVolume(GL_R32UI, size, "voxel/lock");
     fluxSum = createVolume(GL_R32UI, {3 * v, v, v * l}, "voxel/flux_sum");
     gathered = bounces ? createVolume(GL_RGBA16F, size, "voxel/gathered") : gl::Texture();
+    // Faces are fetched whole, never filtered.
+    edgeFaces = occupancy ? createVolume(GL_RGBA8_SNORM, {2 * v, v, v}, "voxel/edge_faces")
+                          : gl::Texture();
+    if (occupancy) {
+        glTextureParameteri(edgeFaces.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(edgeFaces.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
     for (gl::Texture& scratch : distanceScratch) {
         scratch = createVolume(GL_R8UI, glm::ivec3(v), "voxel/distance_scratch");
     }
@@ -63,7 +70,7 @@ void VoxelTextures::clear() const {
 }
 
 std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotropicVoxels,
-        bool bounces) {
+        bool bounces, bool occupancy) {
     const glm::ivec3 size(v, v, v * l);
     const int faces = facesOf(anisotropicVoxels);
     std::vector<gl::MemoryItem> items = {{"voxel/albedo", gl::textureBytes(GL_RGBA16F, size, 1)},
@@ -75,6 +82,9 @@ std::vector<gl::MemoryItem> VoxelTextures::memoryFor(int v, int l, bool anisotro
             {"voxel/pyramid", gl::textureBytes(GL_RGBA16F, {v / 2 * VOXEL_FACES, v / 2, v / 2},
                     gl::fullMipCount(v / 2))}};
     if (bounces) items.push_back({"voxel/gathered", gl::textureBytes(GL_RGBA16F, size, 1)});
+    if (occupancy) {
+        items.push_back({"voxel/edge_faces", gl::textureBytes(GL_RGBA8_SNORM, {2 * v, v, v}, 1)});
+    }
     items.push_back({"voxel/distance_scratch", 2 * gl::textureBytes(GL_R8UI, glm::ivec3(v), 1)});
     if (anisotropicVoxels) {
         items.push_back({"voxel/directional",

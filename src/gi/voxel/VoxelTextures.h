@@ -11,6 +11,8 @@
 // of its 6 faces (RGBA16F, 48 more bytes per voxel: 4.72 MB at v=32, l=3) and the pyramid
 // holds 6 faces too (DirectionalVoxelsPass.h). With gi.bounces > 1 one more RGBA16F volume
 // remembers the indirect light the voxels gathered (BouncePass.h), 8 more bytes per voxel.
+// The occupancy the visibility marches walk keeps its edge voxels' faces, 8 bytes per voxel of
+// level 0 (EdgeFacesPass.h).
 #pragma once
 
 #include "gl/Objects.h"
@@ -38,15 +40,17 @@ struct VoxelTextures {
                               // face f (VOXEL_FACE_*), rgb = rho E x a, a = facing coverage
     gl::Texture gathered;     // gi.bounces > 1 only: rgb = the indirect E x coverage the voxel
                               // gathered from the other voxels, included in irradiance
+    gl::Texture edgeFaces;    // the occupancy only (voxel.projectedAreas), (2v, v, v): level 0's
+                              // edge voxels' two faces (EdgeFacesPass.h)
     int resolution = 0, levels = 0;
     bool anisotropic = false;
 
-    void allocate(int v, int l, bool anisotropicVoxels, bool bounces);
+    void allocate(int v, int l, bool anisotropicVoxels, bool bounces, bool occupancy);
     [[nodiscard]] int pyramidLevels() const;   // log2(v): mip 0 is (v/2)^3, the last 1^3
     void clear() const;
     // What allocate(v, l) allocates, before allocating it.
     [[nodiscard]] static std::vector<gl::MemoryItem> memoryFor(int v, int l,
-            bool anisotropicVoxels, bool bounces = false);
+            bool anisotropicVoxels, bool bounces = false, bool occupancy = false);
 };
 
 } // namespace gi::voxel

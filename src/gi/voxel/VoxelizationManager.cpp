@@ -34,7 +34,7 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
            mPropagate.init(shaders, error) && mBounce.init(shaders, error) &&
            mDirectional.init(shaders, error) &&
-           mEmptyDistance.init(shaders, error) && mPyramid.init(shaders, error) &&
+           mEmptyDistance.init(shaders, error) && mEdgeFaces.init(shaders, error) && mPyramid.init(shaders, error) &&
            mTrace.init(shaders, error) &&
            mReuse.init(shaders, error) && mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
@@ -109,6 +109,7 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
     if (mConfigured && s.traceReuse != mSettings.traceReuse) mReuse.dropHistory();
     const bool reallocate = !mConfigured || s.resolution != mSettings.resolution ||
                             s.levels != mSettings.levels || s.anisotropic != mSettings.anisotropic ||
+                            s.projectedAreas != mSettings.projectedAreas ||
                             (settings.giBounces > 1) != (mBounces > 1);
     const bool replace = reallocate || s.extent != mSettings.extent ||
                          s.sceneCentred != mSettings.sceneCentred ||
@@ -117,7 +118,9 @@ bool VoxelizationManager::configure(const Settings& settings, std::string& error
     mBounces = settings.giBounces;
     mGlossyMaterials = settings.glossyMaterials();
     mConfigured = true;
-    if (reallocate) mTextures.allocate(s.resolution, s.levels, s.anisotropic, mBounces > 1);
+    if (reallocate) {
+        mTextures.allocate(s.resolution, s.levels, s.anisotropic, mBounces > 1, s.projectedAreas);
+    }
     if (replace) mFinestExtent = s.extent;
     return true;
 }
@@ -172,6 +175,7 @@ void VoxelizationManager::updateOccupancy(const GiFrameInputs& in, gl::GpuProfil
     }
     voxelize(in, profiler);
     mPropagate.execute({mUniforms}, {mTextures}, profiler);
+    if (mSettings.projectedAreas) mEdgeFaces.execute({mUniforms}, {mTextures}, profiler);
     rememberContent(in, Content::Occupancy);
 }
 

@@ -19,6 +19,7 @@
 #include "gi/voxel/ConeTracePass.h"
 #include "gi/voxel/TraceReusePass.h"
 #include "gi/voxel/DirectionalVoxelsPass.h"
+#include "gi/voxel/EdgeFacesPass.h"
 #include "gi/voxel/EmptyDistancePass.h"
 #include "gi/voxel/IndirectFilterPass.h"
 #include "gi/voxel/InjectPass.h"
@@ -43,12 +44,12 @@ public:
     // The diagonal of the coarsest cascade level.
     float gatherReach() const override;
 
-    // Occupancy only (for the atlas' visibility): places the cascade, clears it, voxelizes
-    // and propagates coverage; no light injection, no tracing.
+    // Occupancy only (for the atlas' visibility): places the cascade, clears it, voxelizes,
+    // propagates coverage and finds the edge voxels' faces; no light injection, no tracing.
     void updateOccupancy(const GiFrameInputs& in, gl::GpuProfiler& profiler);
     [[nodiscard]] OccupancyVolume occupancy() const {
-        return {mTextures.albedo, mTextures.normal, mTextures.irradiance, mUniforms,
-                mContentVersion, mVolume.levels()};
+        return {mTextures.albedo, mTextures.normal, mTextures.irradiance, mTextures.edgeFaces,
+                mUniforms, mContentVersion, mVolume.levels()};
     }
     // How many frames reused the previous frame's voxels and light (for tests and reports).
     [[nodiscard]] std::uint64_t reusedFrames() const { return mReusedFrames; }
@@ -106,6 +107,7 @@ private:
     BouncePass mBounce;
     DirectionalVoxelsPass mDirectional;
     EmptyDistancePass mEmptyDistance;
+    EdgeFacesPass mEdgeFaces;
     RadiancePyramidPass mPyramid;
     ConeTracePass mTrace;
     TraceReusePass mReuse;

@@ -20,10 +20,7 @@ std::vector<shader::GpuVpl> VplBouncePass::execute(const std::vector<shader::Gpu
     glProgramUniform2i(mProgram.id(), LOC_VPL_BOUNCE_COUNTS, GLint(parents.size()), rays);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_VPLS, parentBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, BIND_SSBO_VPL_BOUNCES, hits.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, occupancy.voxelUniforms.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, occupancy.coverage.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, occupancy.planes.id());
-    glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, occupancy.projectedAreas.id());
+    occupancy.bind();
     glDispatchCompute(GLuint((rays + VPL_BOUNCE_LOCAL_SIZE - 1) / VPL_BOUNCE_LOCAL_SIZE), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);

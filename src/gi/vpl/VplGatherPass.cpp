@@ -47,10 +47,7 @@ void VplGatherPass::execute(const Inputs& in, gl::GpuProfiler& profiler) {
     glBindTextureUnit(BIND_TEX_VPL_POSITION, in.gBuffer.position().id());
     glBindTextureUnit(BIND_TEX_VPL_NORMAL, in.gBuffer.normal().id());
     if (in.occupancy) {
-        glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, in.occupancy->voxelUniforms.id());
-        glBindTextureUnit(BIND_TEX_VOXEL_ALBEDO, in.occupancy->coverage.id());
-        glBindTextureUnit(BIND_TEX_VOXEL_NORMAL, in.occupancy->planes.id());
-        glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, in.occupancy->projectedAreas.id());
+        in.occupancy->bind();
     }
     if (in.octree) in.octree->bind();
     const int segment = in.occupancy ? in.occupancy->visibilityLoopIterations()
