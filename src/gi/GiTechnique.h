@@ -46,9 +46,6 @@ struct OccupancyVolume {
     std::uint64_t version = 0;         // changes whenever the occupancy is recomputed
     int levels = 1;                    // cascade levels in the textures
 
-    // The loop iterations one segment of common/voxel_visibility.glsl runs at most: its walk's
-    // steps, each finding its level among `levels`, the two ends' levels, and the edge voxels
-    // it tests after the walk.
     // Binds what the march reads at its slots (shaders/common/voxel_visibility.glsl).
     void bind() const {
         glBindBufferBase(GL_UNIFORM_BUFFER, BIND_UBO_VOXEL, voxelUniforms.id());
@@ -57,6 +54,9 @@ struct OccupancyVolume {
         glBindTextureUnit(BIND_TEX_VOXEL_IRRADIANCE, projectedAreas.id());
         glBindTextureUnit(BIND_TEX_VOXEL_EDGE_FACES, edgeFaces.id());
     }
+    // The loop iterations one segment of common/voxel_visibility.glsl runs at most: its walk's
+    // steps, each finding its level among `levels`, the two ends' levels, and the edge voxels
+    // it tests after the walk.
     [[nodiscard]] int visibilityLoopIterations() const {
         return 2 * levels + VOXEL_VISIBILITY_MAX_STEPS * (1 + levels) + VOXEL_VISIBILITY_MAX_EDGES;
     }

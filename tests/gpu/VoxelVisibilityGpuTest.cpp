@@ -1,7 +1,7 @@
 // The visibility march through the voxel occupancy (shaders/common/voxel_visibility.glsl), which
 // converged atlas GI and VPL GI weight every sender by: segments past, along and through a
-// voxelized cube's edge and a slab thinner than a voxel, on one scene-centred level whose placement the
-// test checks puts the edge mid-voxel and both slab faces in one voxel.
+// voxelized cube's edge and a slab thinner than a voxel, on one scene-centred level whose
+// placement the test checks puts the edge mid-voxel and both slab faces in one voxel.
 #include "ComputeProbe.h"
 #include "GpuTest.h"
 #include "TestScenes.h"
@@ -129,7 +129,8 @@ void edgeAndSlabCases(bool projectedAreas) {
             // Along the cube's +x face a fifth of a voxel outside it and on past the edge:
             // through the edge's voxel beside the face, where the edge's mean plane lies.
             segment({h + 0.2f * size, 0.03f, -0.2f}, {h + 0.2f * size, 0.03f, h + 0.2f}),
-            // The same a fifth of a voxel inside the face: into the cube.
+            // A fifth of a voxel inside that face, from in front of the +z face: into the cube
+            // through the edge's voxel.
             segment({h - 0.2f * size, 0.03f, h + 0.2f}, {h - 0.2f * size, 0.03f, -0.2f}),
     };
     error.clear();

@@ -34,7 +34,8 @@ bool VoxelizationManager::init(gl::ShaderLibrary& shaders, const scene::Scene& s
     return mVoxelize.init(shaders, error) && mInject.init(shaders, error) &&
            mPropagate.init(shaders, error) && mBounce.init(shaders, error) &&
            mDirectional.init(shaders, error) &&
-           mEmptyDistance.init(shaders, error) && mEdgeFaces.init(shaders, error) && mPyramid.init(shaders, error) &&
+           mEmptyDistance.init(shaders, error) && mEdgeFaces.init(shaders, error) &&
+           mPyramid.init(shaders, error) &&
            mTrace.init(shaders, error) &&
            mReuse.init(shaders, error) && mFilter.init(shaders, error) &&
            mDebugView.init(shaders, error);
