@@ -138,6 +138,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 {"fixed", "adaptive"}, [](Settings& s) -> int& { return s.plan; }),
         intSetting("render.supersample", "samples per pixel per axis, box-averaged", 1, 4,
                 [](Settings& s) -> int& { return s.supersample; }),
+        powerOfTwoSetting("render.msaa",
+                "samples a pixel of the final shading pass (power of two; 1 = off): a pixel "
+                "where surfaces meet averages them by the area each covers, as the path "
+                "tracer's pixel does",
+                1, 8, Zero::Refused, [](Settings& s) -> int& { return s.msaa; }),
         intSetting("render.frames", "frames rendered; --timings reports their median", 1, 1000,
                 [](Settings& s) -> int& { return s.frames; }),
         intSetting("render.warmup", "frames rendered before timing starts", 0, 1000,

@@ -225,6 +225,9 @@ struct Settings {
     int plan = PLAN_ADAPTIVE;          // render.plan: adaptive (cascades and atlas sized from
                                        // the scene) or fixed (the thesis' settings as given)
     int supersample = 1;        // render.supersample: pixels averaged per output pixel per axis
+    int msaa = 1;               // render.msaa: samples a pixel of the final shading pass, each
+                                // surface shaded once per pixel and averaged by the area its
+                                // samples cover (1 = one surface a pixel, at its centre)
     int frames = 1;             // render.frames: frames rendered; timings are their median
     int warmupFrames = 0;       // render.warmup: frames rendered and discarded before timing
     bool glDebug = false;       // gl.debug: KHR_debug messages to stderr

@@ -1,5 +1,6 @@
 #include "gl/Limits.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace gi::gl {
@@ -19,6 +20,23 @@ bool fitsResourceBudget(const std::string& what, const std::vector<MemoryItem>& 
     double bytes = 0.0;
     for (const MemoryItem& item : items) bytes += double(item.bytes);
     return fitsResourceBudget(what, bytes, error);
+}
+
+int supportedSamples(std::initializer_list<GLenum> formats, int requested) {
+    int supported = std::max(requested, 1);
+    for (const GLenum format : formats) {
+        GLint count = 0;
+        glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_NUM_SAMPLE_COUNTS, 1, &count);
+        std::vector<GLint> counts(std::size_t(std::max(count, 0)));
+        if (!counts.empty()) {
+            glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, format, GL_SAMPLES,
+                    GLsizei(counts.size()), counts.data());
+        }
+        int best = 1;
+        for (const GLint c : counts) best = c <= supported ? std::max(best, int(c)) : best;
+        supported = best;
+    }
+    return supported;
 }
 
 std::string glErrorName(GLenum error) {

@@ -10,6 +10,7 @@
 #include <glad/gl.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ inline constexpr std::uint64_t kResourceBudgetBytes = std::uint64_t(2) << 30;
 [[nodiscard]] bool fitsResourceBudget(const std::string& what, const std::vector<MemoryItem>& items,
         std::string& error);
 [[nodiscard]] bool fitsResourceBudget(const std::string& what, double bytes, std::string& error);
+
+// The most samples a texel, up to `requested`, that multisampled 2D textures of every one of
+// `formats` support (1 when some format has none); llvmpipe takes 4 for RGBA32F.
+[[nodiscard]] int supportedSamples(std::initializer_list<GLenum> formats, int requested);
 
 // "GL_OUT_OF_MEMORY (0x0505)" and the like.
 [[nodiscard]] std::string glErrorName(GLenum error);

@@ -53,6 +53,16 @@ Texture createTexture2D(GLenum internalFormat, glm::ivec2 size, int levels, cons
     return Texture(id);
 }
 
+Texture createTexture2DMultisample(GLenum internalFormat, glm::ivec2 size, int samples,
+        const char* name) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
+    glTextureStorage2DMultisample(id, samples, internalFormat, size.x, size.y, GL_TRUE);
+    label(GL_TEXTURE, id, name);
+    recordTexture(id, name, internalFormat, {size, samples}, 1);   // a sample weighs a texel
+    return Texture(id);
+}
+
 Texture createTexture3D(GLenum internalFormat, glm::ivec3 size, int levels, const char* name) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);

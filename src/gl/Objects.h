@@ -26,6 +26,9 @@ namespace gi::gl {
         const char* label);
 [[nodiscard]] Texture createTexture2D(GLenum internalFormat, glm::ivec2 size, int levels,
         const char* label);
+// `samples` samples a texel at fixed positions (a multisampled render target).
+[[nodiscard]] Texture createTexture2DMultisample(GLenum internalFormat, glm::ivec2 size,
+        int samples, const char* label);
 [[nodiscard]] Texture createTexture3D(GLenum internalFormat, glm::ivec3 size, int levels,
         const char* label);
 [[nodiscard]] Texture createTextureCubeArray(GLenum internalFormat, int size, int layers,

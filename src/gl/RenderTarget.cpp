@@ -1,5 +1,6 @@
 #include "gl/RenderTarget.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -35,12 +36,19 @@ bool attachFramebuffer(Framebuffer& framebuffer, const char* label,
     return framebufferComplete(framebuffer, label, error);
 }
 
-void RenderTarget::resize(glm::ivec2 size) {
+void RenderTarget::resize(glm::ivec2 size, int samples) {
     size = glm::max(size, glm::ivec2(1));
-    if (size == mSize && mFramebuffer) return;
+    samples = std::max(samples, 1);
+    if (size == mSize && samples == mSamples && mFramebuffer) return;
     mSize = size;
-    mColor = mColorSpec.format != GL_NONE ? createTargetTexture(mColorSpec, size) : Texture();
-    mDepth = mDepthSpec.format != GL_NONE ? createTargetTexture(mDepthSpec, size) : Texture();
+    mSamples = samples;
+    auto create = [&](const TargetTexture& spec) {
+        if (spec.format == GL_NONE) return Texture();
+        return samples > 1 ? createTexture2DMultisample(spec.format, size, samples, spec.label)
+                           : createTargetTexture(spec, size);
+    };
+    mColor = create(mColorSpec);
+    mDepth = create(mDepthSpec);
     std::string error;
     const bool complete = mColor
             ? attachFramebuffer(mFramebuffer, mLabel, {&mColor}, mDepth ? &mDepth : nullptr, error)

@@ -36,10 +36,11 @@ public:
     RenderTarget(const char* label, TargetTexture color, TargetTexture depth = {})
             : mLabel(label), mColorSpec(color), mDepthSpec(depth) {}
 
-    // Reallocates the textures at `size` (at least 1x1) when it differs from the current one.
+    // Reallocates the textures at `size` (at least 1x1) and `samples` a texel (1: plain 2D
+    // textures, more: multisampled ones) when either differs from the current one.
     // An incomplete framebuffer is reported on stderr: the formats are fixed, so it can only
     // mean a driver without them, and the frame goes on (drawing nothing into it).
-    void resize(glm::ivec2 size);
+    void resize(glm::ivec2 size, int samples = 1);
     // Binds the framebuffer for drawing with a viewport covering it.
     void bind() const;
     // Clears colour to 0 and depth to 1 (enabling their write masks, which gate clears).
@@ -49,6 +50,7 @@ public:
     const Texture& depth() const { return mDepth; }
     const Framebuffer& framebuffer() const { return mFramebuffer; }
     glm::ivec2 size() const { return mSize; }
+    int samples() const { return mSamples; }
 
 private:
     const char* mLabel;
@@ -56,6 +58,7 @@ private:
     Texture mColor, mDepth;
     Framebuffer mFramebuffer;
     glm::ivec2 mSize{0};
+    int mSamples = 1;
 };
 
 } // namespace gi::gl

@@ -305,9 +305,22 @@ void FrameRenderer::render(const scene::CameraView& camera, glm::ivec2 outputSiz
     switches.shadowMaps = mShadows.mapKinds();
     switches.materialTextures = mScene->textureKinds();
     switches.lightKinds = mScene->lightKinds();
-    mForward.execute({*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
-                             mSettings.depthPrepass, gi.indirectSpecular, switches},
-            {mTarget}, profiler);
+    const ForwardPass::Inputs forward{*mScene, mShadows, mFrameUniforms, gi.indirect, gi.size,
+            mSettings.depthPrepass, gi.indirectSpecular, switches};
+    if (mSettings.msaa <= 1) {
+        mForward.execute(forward, {mTarget}, profiler);
+        return;
+    }
+    // Each surface a pixel's samples cover is shaded once, at the pixel's centre; the resolve
+    // averages the samples, so a pixel on a silhouette holds both surfaces by the area each
+    // covers, as the path tracer's pixel does (docs/conventions.md).
+    mSamples.resize(mRenderSize,
+            gl::supportedSamples({GL_RGBA32F, GL_DEPTH_COMPONENT32F}, mSettings.msaa));
+    mForward.execute(forward, {mSamples}, profiler);
+    gl::GpuScope scope(profiler, "render/resolve");
+    glBlitNamedFramebuffer(mSamples.framebuffer().id(), mTarget.framebuffer().id(), 0, 0,
+            mRenderSize.x, mRenderSize.y, 0, 0, mRenderSize.x, mRenderSize.y,
+            GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 float FrameRenderer::radianceScale() const {

@@ -134,6 +134,9 @@ private:
     gl::Buffer mFrameUniforms;
     gl::RenderTarget mTarget{"frame/target", {GL_RGBA32F, "frame/radiance"},
             {GL_DEPTH_COMPONENT32F, "frame/depth"}};
+    // The final shading's samples with render.msaa > 1, resolved into mTarget.
+    gl::RenderTarget mSamples{"frame/samples", {GL_RGBA32F, "frame/radiance_samples"},
+            {GL_DEPTH_COMPONENT32F, "frame/depth_samples"}};
     OutputComponent mLastOutput = OutputComponent::Final;
     glm::ivec2 mRenderSize{0};
     ShadowPass mShadows;
