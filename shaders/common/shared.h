@@ -460,7 +460,9 @@ struct VoxelUniforms {                  // std140
     vec4 cones;                         // x = weight of the central cone, y = pixel classes
                                         // sharing the rings' cones (1 or 2), z = 1 when the
                                         // dither moves the rings in elevation
-                                        // (voxel.jitter_elevation), w = unused (ConeSet.h)
+                                        // (voxel.jitter_elevation), w = voxels between a
+                                        // cone's origin and the start of its walk on a
+                                        // one-level volume (voxel.walk_start) (ConeSet.h)
     vec4 coneRings[3];                  // per ring: x = cones (0: no ring), y = sin^2 of their
                                         // angle from the normal, z = how far in sin^2 the
                                         // dither moves them up and down, w = each cone's weight

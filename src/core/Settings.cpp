@@ -294,9 +294,13 @@ const std::vector<SettingSpec>& settingSpecs() {
                 0.25f, 2.0f, [](Settings& s) -> float& { return s.voxel.footprint; }),
         floatSetting("voxel.cone_offset",
                 "finest voxels between a surface and the origin of its cones, at least one voxel "
-                "of the level holding it (the thesis' minimum distance; the walk starts one "
-                "voxel further out)",
+                "of the level holding it (the thesis' minimum distance)",
                 0.5f, 4.0f, [](Settings& s) -> float& { return s.voxel.coneOffset; }),
+        floatSetting("voxel.walk_start",
+                "voxels between a cone's origin and where its walk starts, on a one-level volume "
+                "(the thesis' 1 skips the surfaces within a voxel of the origin; a cascade "
+                "always starts 1 voxel out)",
+                0.0f, 2.0f, [](Settings& s) -> float& { return s.voxel.walkStart; }),
         boolSetting("voxel.falloff", "apply the thesis' 1/(1+d^2) attenuation to cone samples",
                 [](Settings& s) -> bool& { return s.voxel.falloff; }),
         boolSetting("voxel.upsample_depth", "depth-aware upsampling of the traced indirect light",

@@ -108,8 +108,11 @@ struct VoxelSettings {
                                   // twice the cone's footprint, cone_tracing.glsl)
     float coneOffset = 1.0f;      // voxel.cone_offset: finest voxels between a surface and its
                                   // cones' origin (at least one voxel of the level holding
-                                  // it), the thesis' minimum distance; the walk starts one
-                                  // voxel further out
+                                  // it), the thesis' minimum distance
+    float walkStart = 0.0f;       // voxel.walk_start: voxels of the level holding a cone's
+                                  // origin between the origin and the first voxel its walk
+                                  // reads, on a one-level volume (the thesis' 1; a cascade
+                                  // always starts one voxel out)
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
     bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (RingDither.h)

@@ -215,12 +215,16 @@ TEST_F(VoxelSuiteGpuTest, ClosedWhiteBoxKeepsItsIndirectEnergy) {
 // 0.056 against the default mip's (voxel.footprint, texels 0.6 diameters wide) 1.018 and
 // 0.046; since cones stop at every floor they cross (cone_tracing.glsl's plane tolerance) both
 // score alike here (0.046 and 0.044, energy 0.967 and 1.029), and the next test compares them
-// where they differ.
+// where they differ. Since the walk starts at the cones' origin (voxel.walk_start) the box
+// reads 1.035 (its corners, where the outer ring reads the wall across the edge higher up than
+// the darker strip beside the edge that its band stands for: accuracy-analysis.md, 'The
+// cones' walk from their origin'), its relative RMSE 0.045 as before: the upper bound was
+// 1.03 until then.
 TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintKeepsTheClosedBoxEnergy) {
     const scene::Scene scene = loadTestScene("assets/scene_suite/closed_white_box.gltf");
     const Settings settings = lambertian();
     expectVoxelWithin(scene, settings,
-            label("closed white box, footprint %.2f", settings.voxel.footprint), 0.06, 0.97, 1.03);
+            label("closed white box, footprint %.2f", settings.voxel.footprint), 0.06, 0.97, 1.04);
 }
 
 // The default footprint against the thesis' on the classic Cornell box, whose lamp 1 cm under
@@ -243,6 +247,26 @@ TEST_F(VoxelSuiteGpuTest, ReadingTheConesOwnFootprintBeatsTheThesisReadOnTheCorn
             EXPECT_LT(errors.relativeRmse, thesisError - 0.03);
         }
     }
+}
+
+// On one level the cones' walk starts at their origin, a voxel off the surface (voxel.walk_start
+// 0), instead of a voxel further out as in the thesis, which skipped every surface within two
+// voxels: the blocks' feet in the open-front box lost the sunlit floor beside them, and points
+// near the room's edges the wall across the edge (scoreboard form, 128x128 against 4096 spp:
+// relative RMSE 0.233 -> 0.207).
+TEST_F(VoxelSuiteGpuTest, WalkingFromTheOriginSeesTheSurfacesBesideAnEdge) {
+    const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_open_front_sun.gltf");
+    const reference::ReferenceResult truth = referenceIndirect(scene);
+    Settings settings = lambertian();
+    settings.voxel.walkStart = 1.0f;
+    const reference::ImageErrors thesis = voxelAgainst(truth, scene, settings);
+    printErrors("open-front box, walk from one voxel out", thesis);
+    settings.voxel.walkStart = 0.0f;
+    const reference::ImageErrors origin = voxelAgainst(truth, scene, settings);
+    printErrors("open-front box, walk from the origin", origin);
+    EXPECT_LT(origin.relativeRmse, thesis.relativeRmse - 0.01);
+    EXPECT_GT(origin.energyRatio, 0.9);
+    EXPECT_LT(origin.energyRatio, 1.1);
 }
 
 } // namespace

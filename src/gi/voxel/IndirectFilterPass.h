@@ -1,7 +1,8 @@
 // Edge-aware smoothing of the cone-traced indirect irradiance at trace resolution (see
-// shaders/voxel/indirect_filter.comp): a depth-weighted box filter of radius voxel.filter
-// texels (at voxel.trace_scale 0.5, scaled with the trace scale so it covers the same part of
-// the image) that, with the per-pixel cone jitter, averages 16 cone rings per pixel.
+// shaders/voxel/indirect_filter.comp): a box filter of radius voxel.filter texels (at
+// voxel.trace_scale 0.5, scaled with the trace scale so it covers the same part of the image),
+// each neighbour weighted by its view depth and its distance from the centre's plane, that,
+// with the per-pixel cone jitter, averages 16 cone rings per pixel.
 // Inputs : ConeTracePass output (RGBA16F, rgb = E_ind W/m^2, a = view depth m), VoxelUniforms.
 // Outputs: result(), RGBA16F texture of the same size and meaning.
 #pragma once

@@ -150,7 +150,7 @@ void VoxelizationManager::writeUniforms() {
             mSettings.coneOffset);
     const int classes = conePixelClasses(mSettings.cones, mSettings.coneInterleave, filterRadius);
     u.cones = glm::vec4(cones.centralWeight, float(classes),
-            mSettings.jitter && mSettings.jitterElevation ? 1.0f : 0.0f, 0.0f);
+            mSettings.jitter && mSettings.jitterElevation ? 1.0f : 0.0f, mSettings.walkStart);
     for (std::size_t k = 0; k < cones.rings.size(); ++k) {
         const ConeRing& ring = cones.rings[k];
         const float sine = std::sin(ring.elevation);
