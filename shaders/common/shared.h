@@ -392,6 +392,12 @@
 namespace gi::shader {
 #endif
 
+// FrameUniforms.counts.w: how the forward pass upsamples a GI technique's indirect texture
+// (voxel.upsample_depth, voxel.upsample_plane).
+#define UPSAMPLE_BILINEAR           0
+#define UPSAMPLE_DEPTH              1   // weighted by view depth
+#define UPSAMPLE_DEPTH_PLANE        2   // and by the distance from the pixel's plane
+
 struct FrameUniforms {                  // std140
     mat4 viewProjection;                // world -> clip
     mat4 view;                          // world -> camera
@@ -401,8 +407,8 @@ struct FrameUniforms {                  // std140
     mat4 inverseViewProjection;         // clip -> world, for per-pixel rays
     vec4 screen;                        // xy = output size (pixels), zw = unused
     ivec4 counts;                       // x = number of lights, y = OUTPUT_* component to
-                                        // write, z = unused, w = 1 for depth-aware
-                                        // upsampling of the indirect texture
+                                        // write, z = unused, w = UPSAMPLE_* of the
+                                        // indirect texture
     vec4 sky;                           // rgb = radiance of the sky lights together
                                         // (W/(m^2 sr)), seen where a cone escapes; w = unused
     vec4 shadowing;                     // x = SHADOW_METHOD_*, y = shadow rays per area light,

@@ -24,13 +24,33 @@ in VertexData { VERTEX_DATA_MEMBERS } vin;
 
 layout(location = 0) out vec4 outRadiance;
 
+// How sharply a texel's distance from the pixel's plane, relative to the pixel's depth, lowers
+// its weight beside the bilinear one (to a tenth at 0.5 %); on the pixel's plane the texels
+// differ from it by the half-float depth's rounding (0.05 %).
+const float kUpsamplePlaneSharpness = 4e5;
+
+// View depth (m) where the ray through screen point uv meets the plane through `position`
+// facing n; 0 where the ray runs along the plane.
+float planeDepthAt(vec2 uv, vec3 position, vec3 n) {
+    vec4 far = frame.inverseViewProjection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
+    vec3 ray = far.xyz / far.w - frame.cameraPosition.xyz;
+    float along = dot(n, ray);
+    if (abs(along) < 1e-9) return 0.0;
+    vec3 forward = -vec3(frame.view[0][2], frame.view[1][2], frame.view[2][2]);
+    return dot(n, position - frame.cameraPosition.xyz) / along * dot(ray, forward);
+}
+
 // Indirect light of this pixel's surface from one of the GI technique's screen-space textures,
 // which may be smaller than the output. Bilinear (the thesis) or depth-aware: the four
 // nearest texels weighted bilinearly and by how close their view depth is to this pixel's,
-// so light does not bleed across depth edges; empty texels (a = 0) never count.
-vec3 upsampledIndirect(sampler2D indirectTexture, float viewDepth) {
+// so light does not bleed across depth edges, and (UPSAMPLE_DEPTH_PLANE) by how far each lies
+// from the pixel's own plane (`position`, facing n), so it does not bleed across edges where
+// two surfaces meet at one depth (a wall and the ceiling: accuracy-analysis.md); empty texels
+// (a = 0) never count.
+vec3 upsampledIndirect(sampler2D indirectTexture, float viewDepth, vec3 position, vec3 n) {
     vec2 uv = gl_FragCoord.xy / frame.screen.xy;
-    if (frame.counts.w == 0) return texture(indirectTexture, uv).rgb;
+    if (frame.counts.w == UPSAMPLE_BILINEAR) return texture(indirectTexture, uv).rgb;
+    float planeSharpness = frame.counts.w == UPSAMPLE_DEPTH_PLANE ? kUpsamplePlaneSharpness : 0.0;
     vec2 p = uv * indirectSize - 0.5;
     vec2 f = fract(p);
     ivec2 base = ivec2(floor(p));
@@ -39,11 +59,16 @@ vec3 upsampledIndirect(sampler2D indirectTexture, float viewDepth) {
     float weightSum = 0.0;
     for (int i = 0; i < 4; ++i) {
         ivec2 o = ivec2(i & 1, i >> 1);
-        vec4 t = texelFetch(indirectTexture, clamp(base + o, ivec2(0), maxTexel), 0);
+        ivec2 texel = clamp(base + o, ivec2(0), maxTexel);
+        vec4 t = texelFetch(indirectTexture, texel, 0);
         if (t.a <= 0.0) continue;
         float bilinear = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-        float relative = abs(t.a - viewDepth) / max(viewDepth, 1e-6);
-        float w = (bilinear + 1e-3) / (1e-3 + relative * relative * 400.0);
+        float scale = 1.0 / max(viewDepth, 1e-6);
+        float relative = abs(t.a - viewDepth) * scale;
+        float offPlane = abs(t.a - planeDepthAt((vec2(texel) + 0.5) / indirectSize, position, n)) *
+                scale;
+        float w = (bilinear + 1e-3) /
+                (1e-3 + relative * relative * 400.0 + offPlane * offPlane * planeSharpness);
         sum += w * t.rgb;
         weightSum += w;
     }
@@ -90,9 +115,9 @@ void main() {
     vec3 indirect = vec3(0.0);
     if (indirectSize.x > 0.0) {
         float viewDepth = -(frame.view * vec4(vin.position, 1.0)).z;
-        indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth);
+        indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth, vin.position, n);
         if (model == SHADING_GLTF && hasIndirectSpecular != 0) {
-            indirect += upsampledIndirect(indirectSpecularTexture, viewDepth);
+            indirect += upsampledIndirect(indirectSpecularTexture, viewDepth, vin.position, n);
         }
     } else {
         // Without GI nothing tells where the sky is visible: it lights every surface as an

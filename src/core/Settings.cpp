@@ -305,6 +305,11 @@ const std::vector<SettingSpec>& settingSpecs() {
                 [](Settings& s) -> bool& { return s.voxel.falloff; }),
         boolSetting("voxel.upsample_depth", "depth-aware upsampling of the traced indirect light",
                 [](Settings& s) -> bool& { return s.voxel.depthUpsample; }),
+        boolSetting("voxel.upsample_plane",
+                "with voxel.upsample_depth, each texel of the indirect light is also weighted by "
+                "its distance from the pixel's own plane, so light does not cross edges where "
+                "two surfaces meet at one depth",
+                [](Settings& s) -> bool& { return s.voxel.planeUpsample; }),
         boolSetting("voxel.cache",
                 "voxelize static geometry once per cascade placement and reuse the injected light "
                 "while lights and geometry stay the same (0 = every pass every frame)",

@@ -115,6 +115,9 @@ struct VoxelSettings {
                                   // always starts one voxel out)
     bool falloff = false;         // voxel.falloff: the thesis' 1/(1+d^2) sample attenuation
     bool depthUpsample = true;    // voxel.upsample_depth: depth-aware (1) or bilinear (0)
+    bool planeUpsample = false;   // voxel.upsample_plane: the depth-aware upsampling also
+                                  // weighs each texel by its distance from the pixel's plane
+                                  // (measured, not yet the default: accuracy-analysis.md)
     bool jitter = true;           // voxel.jitter: turn the cone ring per pixel (RingDither.h)
     bool jitterElevation = false; // voxel.jitter_elevation: the same dither moves each ring's
                                   // cones within its band (ConeSet.h)

@@ -269,5 +269,22 @@ TEST_F(VoxelSuiteGpuTest, WalkingFromTheOriginSeesTheSurfacesBesideAnEdge) {
     EXPECT_LT(origin.energyRatio, 1.1);
 }
 
+// The half-resolution trace upsampled with each texel weighted also by its distance from the
+// pixel's own plane (voxel.upsample_plane): by depth alone a pixel beside an edge where two
+// surfaces meet at one depth took the other surface's texels (the spot box's ceiling beside
+// the walls, the blocks' tops beside their fronts).
+TEST_F(VoxelSuiteGpuTest, UpsamplingKeepsToEachPixelsPlane) {
+    const scene::Scene scene = loadTestScene("assets/scene_suite/cornell_spot.gltf");
+    const reference::ReferenceResult truth = referenceIndirect(scene);
+    Settings settings = lambertian();
+    settings.voxel.planeUpsample = false;
+    const reference::ImageErrors depthOnly = voxelAgainst(truth, scene, settings);
+    printErrors("spot box, upsampled by depth", depthOnly);
+    settings.voxel.planeUpsample = true;
+    const reference::ImageErrors plane = voxelAgainst(truth, scene, settings);
+    printErrors("spot box, upsampled by depth and plane", plane);
+    EXPECT_LT(plane.relativeRmse, depthOnly.relativeRmse - 0.003);
+}
+
 } // namespace
 } // namespace gi::test
