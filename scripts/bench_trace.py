@@ -127,7 +127,7 @@ COUNTS = [
      " viewDepth + 0.0 * irradiance.x);"),
     # The counters reach the image unfiltered and unscaled by the surface's albedo.
     (os.path.join("render", "forward.frag"),
-     "indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth);",
+     "indirect = diffuse / PI * upsampledIndirect(indirectTexture, viewDepth, vin.position, n);",
      "indirect = texelFetch(indirectTexture, ivec2(gl_FragCoord.xy), 0).rgb;"),
 ]
 

@@ -47,10 +47,21 @@ float planeDepthAt(vec2 uv, vec3 position, vec3 n) {
 // from the pixel's own plane (`position`, facing n), so it does not bleed across edges where
 // two surfaces meet at one depth (a wall and the ceiling: accuracy-analysis.md); empty texels
 // (a = 0) never count.
+// The program is built per mode (FRAME_UPSAMPLE, render/FrameSwitches.h): llvmpipe runs the
+// plane's four ray-plane meets per pixel whether a uniform says to or not (x1.28 of the
+// Cornell box's forward pass).
+int upsampleMode() {
+#ifdef FRAME_UPSAMPLE
+    return FRAME_UPSAMPLE;
+#else
+    return frame.counts.w;
+#endif
+}
+
 vec3 upsampledIndirect(sampler2D indirectTexture, float viewDepth, vec3 position, vec3 n) {
     vec2 uv = gl_FragCoord.xy / frame.screen.xy;
-    if (frame.counts.w == UPSAMPLE_BILINEAR) return texture(indirectTexture, uv).rgb;
-    float planeSharpness = frame.counts.w == UPSAMPLE_DEPTH_PLANE ? kUpsamplePlaneSharpness : 0.0;
+    if (upsampleMode() == UPSAMPLE_BILINEAR) return texture(indirectTexture, uv).rgb;
+    bool byPlane = upsampleMode() == UPSAMPLE_DEPTH_PLANE;
     vec2 p = uv * indirectSize - 0.5;
     vec2 f = fract(p);
     ivec2 base = ivec2(floor(p));
@@ -65,10 +76,13 @@ vec3 upsampledIndirect(sampler2D indirectTexture, float viewDepth, vec3 position
         float bilinear = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         float scale = 1.0 / max(viewDepth, 1e-6);
         float relative = abs(t.a - viewDepth) * scale;
-        float offPlane = abs(t.a - planeDepthAt((vec2(texel) + 0.5) / indirectSize, position, n)) *
-                scale;
-        float w = (bilinear + 1e-3) /
-                (1e-3 + relative * relative * 400.0 + offPlane * offPlane * planeSharpness);
+        float offPlane = 0.0;
+        if (byPlane) {
+            offPlane = abs(t.a - planeDepthAt((vec2(texel) + 0.5) / indirectSize, position, n)) *
+                    scale;
+        }
+        float w = (bilinear + 1e-3) / (1e-3 + relative * relative * 400.0 +
+                                             offPlane * offPlane * kUpsamplePlaneSharpness);
         sum += w * t.rgb;
         weightSum += w;
     }

@@ -233,10 +233,7 @@ void FrameRenderer::writeFrameUniforms(const scene::CameraView& camera, OutputCo
                            : output == OutputComponent::Direct ? OUTPUT_DIRECT
                                                                : OUTPUT_INDIRECT;
     frame.screen = glm::vec4(glm::vec2(mRenderSize), 0.0f, 0.0f);
-    const int upsample = !mSettings.voxel.depthUpsample ? UPSAMPLE_BILINEAR
-                         : mSettings.voxel.planeUpsample ? UPSAMPLE_DEPTH_PLANE
-                                                         : UPSAMPLE_DEPTH;
-    frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, upsample);
+    frame.counts = glm::ivec4(mScene->lightCount(), outputKind, 0, switches.upsample);
     frame.sky = glm::vec4(scene::skyRadiance(mLights) * mScene->exposure(), 0.0f);
     const float offset = mScene->bounds().rayOffset();
     frame.shadowing = glm::vec4(float(switches.shadowMethod), float(mSettings.shadow.rays), offset, 0.0f);

@@ -11,6 +11,9 @@ FrameSwitches FrameSwitches::of(const Settings& settings) {
                                                        : SHADING_LAMBERT;
     switches.shadowMethod = int(settings.shadow.method);
     switches.shadows = settings.shadow.enabled;
+    switches.upsample = !settings.voxel.depthUpsample ? UPSAMPLE_BILINEAR
+                        : settings.voxel.planeUpsample ? UPSAMPLE_DEPTH_PLANE
+                                                       : UPSAMPLE_DEPTH;
     return switches;
 }
 
@@ -20,7 +23,8 @@ std::vector<std::string> FrameSwitches::defines() const {
             std::string("FRAME_SHADOWS ") + (shadows ? "1" : "0"),
             "FRAME_SHADOW_MAPS " + std::to_string(shadowMaps),
             "FRAME_MATERIAL_TEXTURES " + std::to_string(materialTextures),
-            "FRAME_LIGHT_KINDS " + std::to_string(lightKinds)};
+            "FRAME_LIGHT_KINDS " + std::to_string(lightKinds),
+            "FRAME_UPSAMPLE " + std::to_string(upsample)};
 }
 
 } // namespace gi::render

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/Settings.h"
+#include "gl/Shared.h"
 
 #include <string>
 #include <vector>
@@ -25,10 +26,11 @@ struct FrameSwitches {
     // Bit (1 << LIGHT_*) for every kind of light the scene has (GpuScene::lightKinds); the
     // code of the other kinds is compiled out.
     int lightKinds = ~0;
+    int upsample = UPSAMPLE_DEPTH;   // UPSAMPLE_*: how the indirect texture is upsampled
 
     [[nodiscard]] static FrameSwitches of(const Settings& settings);
     // FRAME_SHADING_MODEL, FRAME_SHADOW_METHOD, FRAME_SHADOWS, FRAME_SHADOW_MAPS,
-    // FRAME_MATERIAL_TEXTURES, FRAME_LIGHT_KINDS.
+    // FRAME_MATERIAL_TEXTURES, FRAME_LIGHT_KINDS, FRAME_UPSAMPLE.
     [[nodiscard]] std::vector<std::string> defines() const;
 };
 
